@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_H
+#define CGAL_SUBDIV_H
+
+/// \file Subdiv.h
+/// Convenience header: includes every public header of CGAL Subdiv.
+
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+
+#include <CGAL/Subdiv/curves/Bezier_scheme.h>
+#include <CGAL/Subdiv/curves/Chaikin_scheme.h>
+#include <CGAL/Subdiv/curves/Corner_cutting_scheme.h>
+#include <CGAL/Subdiv/curves/Four_point_scheme.h>
+#include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
+#include <CGAL/Subdiv/curves/curve_mask.h>
+#include <CGAL/Subdiv/curves/refine_polyline.h>
+
+#endif // CGAL_SUBDIV_H

@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_REFINE_POLYLINE_H
+#define CGAL_SUBDIV_REFINE_POLYLINE_H
+
+#include <CGAL/Subdiv/curves/curve_mask.h>
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivCurves
+ * What happens at the two ends of an open polyline.
+ */
+enum class End_rule {
+  /// Only the new points whose whole stencil lies on the polyline are made, as
+  /// in the lecture notes: the polyline loses points at both ends on every
+  /// level. The cubic B-spline limit starts near the second point (at
+  /// (p0 + 4 p1 + p2) / 6); the four-point limit runs from the third point to the
+  /// third from last.
+  shrink,
+  /// The end points are kept and the limit runs from the first to the last
+  /// point. Primal symmetric schemes (odd-degree B-splines, four-point) see the
+  /// polyline continued by point reflection, p_-j = 2 p_0 - p_j (this gives the
+  /// cubic B-spline end rule p'_0 = p_0, the "natural" end); other schemes
+  /// (Chaikin, corner cutting, even-degree B-splines) make the points of
+  /// `shrink` and add the two end points unchanged.
+  keep_ends
+};
+
+/*!
+ * \ingroup PkgSubdivCurves
+ * Options of `refine_polyline()`, set in a chain:
+ * `Polyline_options().number_of_iterations(3).closed(true)`.
+ */
+class Polyline_options
+{
+public:
+  Polyline_options& number_of_iterations(int levels) { m_levels = levels; return *this; }
+  Polyline_options& closed(bool closed) { m_closed = closed; return *this; }
+  Polyline_options& end_rule(End_rule rule) { m_end_rule = rule; return *this; }
+  /// refuse, before allocating, any call whose output would have more points
+  Polyline_options& max_output_points(std::size_t n) { m_max_output_points = n; return *this; }
+
+  int number_of_iterations() const { return m_levels; }
+  bool closed() const { return m_closed; }
+  End_rule end_rule() const { return m_end_rule; }
+  std::size_t max_output_points() const { return m_max_output_points; }
+
+private:
+  int m_levels = 1;
+  bool m_closed = false;
+  End_rule m_end_rule = End_rule::shrink;
+  std::size_t m_max_output_points = std::size_t(1) << 27;
+};
+
+namespace internal {
+
+/*
+ * One level of refinement of a polyline of n points: which new points there
+ * are, and the stencil of each over the old points. Refinement (points),
+ * stencil tables and the analysis all go through `stencil()`, which reads the
+ * scheme's masks and maps offsets to old indices (periodic for closed
+ * polylines, reflected at the ends for keep_ends).
+ */
+template <class Scheme>
+class Polyline_level
+{
+public:
+  using FT = typename Scheme::Number_type;
+
+  Polyline_level(const Scheme& scheme, std::size_t n, bool closed, End_rule end_rule)
+    : m_even(rule(scheme, 0)), m_odd(rule(scheme, 1)), m_n(static_cast<long>(n)),
+      m_closed(closed), m_reflect(false), m_add_ends(false), m_first(0), m_count(0)
+  {
+    if(closed) {
+      m_count = 2 * m_n;
+      return;
+    }
+    if(end_rule == End_rule::keep_ends && is_vertex_centred(scheme)) {
+      m_reflect = true;
+      m_count = 2 * m_n - 1;
+      for(long q = 0; q < m_count; ++q)
+        require(reflection_fits(q), "a polyline of " + std::to_string(n) + " points is too short for " +
+                                      scheme.name() + " with kept ends");
+      return;
+    }
+    // the positions whose whole stencil lies on the polyline form one run
+    long first = -1, last = -2;
+    for(long q = 0; q < 2 * m_n; ++q)
+      if(fits(q)) {
+        if(first < 0)
+          first = q;
+        last = q;
+      }
+    m_first = first;
+    m_count = last - first + 1;
+    for(long q = first; q <= last; ++q)
+      require(fits(q), "internal error: the positions of " + scheme.name() + " do not form one run");
+    m_add_ends = (end_rule == End_rule::keep_ends);
+    const long needed = m_add_ends ? 1 : 2;
+    require(m_count >= needed, "a polyline of " + std::to_string(n) + " points is too short for " +
+                                 scheme.name() + ": no new point has its whole stencil on it");
+  }
+
+  /// number of points of the new level
+  std::size_t size() const { return static_cast<std::size_t>(m_count + (m_add_ends ? 2 : 0)); }
+
+  /// position of new point 0 in the numbering 2i + parity of the new level
+  long first_position() const { return m_add_ends ? m_first - 1 : m_first; }
+
+  /// reports the stencil of new point `j` (0 <= j < size()) as acc.add(old index, weight)
+  template <class Accumulator>
+  void stencil(std::size_t j, Accumulator& acc) const
+  {
+    long q = static_cast<long>(j);
+    if(m_add_ends) {
+      if(j == 0) {
+        acc.add(std::size_t(0), FT(1));
+        return;
+      }
+      if(j + 1 == size()) {
+        acc.add(static_cast<std::size_t>(m_n - 1), FT(1));
+        return;
+      }
+      q -= 1;
+    }
+    q += m_first;
+    const long i = q >> 1;
+    const Stencil<int, FT>& r = (q & 1) ? m_odd : m_even;
+    for(const auto& term : r.terms())
+      add_old_point(i + term.first, term.second, acc);
+  }
+
+private:
+  bool fits(long q) const
+  {
+    const long i = q >> 1;
+    for(const auto& term : ((q & 1) ? m_odd : m_even).terms())
+      if(i + term.first < 0 || i + term.first >= m_n)
+        return false;
+    return true;
+  }
+
+  bool reflection_fits(long q) const
+  {
+    const long i = q >> 1;
+    for(const auto& term : ((q & 1) ? m_odd : m_even).terms()) {
+      const long k = i + term.first;
+      if(k < -(m_n - 1) || k > 2 * (m_n - 1))
+        return false;
+    }
+    return true;
+  }
+
+  template <class Accumulator>
+  void add_old_point(long k, const FT& w, Accumulator& acc) const
+  {
+    if(m_closed) {
+      k %= m_n;
+      if(k < 0)
+        k += m_n;
+    } else if(m_reflect && k < 0) { // p_k = 2 p_0 - p_-k
+      acc.add(std::size_t(0), FT(2) * w);
+      acc.add(static_cast<std::size_t>(-k), -w);
+      return;
+    } else if(m_reflect && k >= m_n) { // p_k = 2 p_n-1 - p_2(n-1)-k
+      acc.add(static_cast<std::size_t>(m_n - 1), FT(2) * w);
+      acc.add(static_cast<std::size_t>(2 * (m_n - 1) - k), -w);
+      return;
+    }
+    acc.add(static_cast<std::size_t>(k), w);
+  }
+
+  Stencil<int, FT> m_even;
+  Stencil<int, FT> m_odd;
+  long m_n;
+  bool m_closed;
+  bool m_reflect;
+  bool m_add_ends;
+  long m_first;
+  long m_count;
+};
+
+template <class Points>
+void check_polyline(const Points& points, bool closed)
+{
+  require(!points.empty(), "the polyline is empty");
+  require(points.size() >= (closed ? 3u : 2u),
+          std::string("a ") + (closed ? "closed polyline needs at least 3 points" : "polyline needs at least 2 points") +
+            ", got " + std::to_string(points.size()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    require(is_finite_point(points[i]), "point " + std::to_string(i) + " has a non-finite coordinate");
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivCurves
+ * refines a polyline `number_of_iterations` times with the rules of `scheme`
+ * and returns the new points. The input is left unchanged.
+ *
+ * \tparam Point `Point_2` or `Point_3` of any CGAL kernel whose `FT` is the
+ *         scheme's `Number_type`; with an exact kernel the result is exact.
+ * \tparam Scheme a model of `CurveSubdivisionScheme`
+ * \throws Bad_input for an empty, too short or non-finite polyline, a negative
+ *         level count, or an output larger than `max_output_points`.
+ */
+template <class Point, class Scheme>
+std::vector<Point> refine_polyline(const std::vector<Point>& points, const Scheme& scheme,
+                                   const Polyline_options& options = Polyline_options())
+{
+  internal::check_polyline(points, options.closed());
+  internal::check_output_size(points.size(), options.number_of_iterations(), options.max_output_points());
+
+  std::vector<Point> current = points;
+  std::vector<Point> next;
+  for(int level = 0; level < options.number_of_iterations(); ++level) {
+    const internal::Polyline_level<Scheme> plan(scheme, current.size(), options.closed(), options.end_rule());
+    next.clear();
+    next.reserve(plan.size());
+    for(std::size_t j = 0; j < plan.size(); ++j) {
+      internal::Point_sum<Point> sum(current);
+      plan.stencil(j, sum);
+      next.push_back(sum.point());
+    }
+    current.swap(next);
+  }
+  return current;
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_REFINE_POLYLINE_H
