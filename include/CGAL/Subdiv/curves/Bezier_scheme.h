@@ -82,7 +82,7 @@ private:
   {
     const std::size_t d = static_cast<std::size_t>(m_degree);
     m_masks.assign(2 * d + 1, Stencil<int, FT>());
-    const auto half = [](const FT& x, const FT& y) { return (x + y) / FT(2); };
+    const auto half = [](const FT& x, const FT& y) -> FT { return (x + y) / FT(2); };
     for(std::size_t source = 0; source <= d; ++source) {
       std::vector<FT> impulse(d + 1, FT(0));
       impulse[source] = FT(1);

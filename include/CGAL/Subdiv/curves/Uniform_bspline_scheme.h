@@ -71,7 +71,7 @@ private:
   {
     const int n = 2 * m_degree + 6; // long enough that no stencil wraps around
     const int c = n / 2;
-    const auto average = [](const FT& x, const FT& y) { return (x + y) / FT(2); };
+    const auto average = [](const FT& x, const FT& y) -> FT { return (x + y) / FT(2); };
     for(int source = 0; source < n; ++source) {
       std::vector<FT> impulse(n, FT(0));
       impulse[source] = FT(1);

@@ -92,18 +92,20 @@ public:
                                       scheme.name() + " with kept ends");
       return;
     }
-    // the positions whose whole stencil lies on the polyline form one run
-    long first = -1, last = -2;
-    for(long q = 0; q < 2 * m_n; ++q)
-      if(fits(q)) {
-        if(first < 0)
-          first = q;
-        last = q;
+    // the longest run of positions whose whole stencil lies on the polyline
+    // (an interpolating scheme also "fits" at its end points, cut off by a gap)
+    long first = 0, count = 0;
+    for(long q = 0, run_start = 0; q <= 2 * m_n; ++q) {
+      if(q < 2 * m_n && fits(q))
+        continue;
+      if(q - run_start > count) {
+        first = run_start;
+        count = q - run_start;
       }
+      run_start = q + 1;
+    }
     m_first = first;
-    m_count = last - first + 1;
-    for(long q = first; q <= last; ++q)
-      require(fits(q), "internal error: the positions of " + scheme.name() + " do not form one run");
+    m_count = count;
     m_add_ends = (end_rule == End_rule::keep_ends);
     const long needed = m_add_ends ? 1 : 2;
     require(m_count >= needed, "a polyline of " + std::to_string(n) + " points is too short for " +
