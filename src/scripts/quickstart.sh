@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Quick start for CGAL Subdiv on Debian 12 (bookworm); run from anywhere as root
+# (or with sudo available):
+#
+#   bash src/scripts/quickstart.sh demo   # install what is missing, build cgal-subdiv, run its demo
+#   bash src/scripts/quickstart.sh test   # install what is missing, build everything, run ctest
+#   bash src/scripts/quickstart.sh deps   # only install what is missing
+#
+# Options (after the mode):
+#   --with-peers   also install the optional peers (OpenMesh, OpenSubdiv, TBB)
+#   --jobs N       parallel build and test jobs (default: nproc; or set JOBS=N)
+#
+# The build is an optimised one that keeps CGAL's preconditions and assertions
+# (Release with -O2, no NDEBUG) in build/ at the root of the checkout. Running it
+# again only redoes what changed. In test mode the exit code is ctest's.
+set -euo pipefail
+
+readonly REQUIRED_PACKAGES=(cmake g++ make libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
+                            libgtest-dev libboost-dev)
+readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev libtbb-dev)
+
+say() { printf '==> %s\n' "$*"; }
+die() { printf 'quickstart: error: %s\n' "$*" >&2; exit 2; }
+
+usage() {
+  sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
+  exit "${1:-0}"
+}
+
+mode=${1:-}
+[[ -n $mode ]] || usage 2
+shift
+case $mode in
+  demo | test | deps) ;;
+  -h | --help | help) usage 0 ;;
+  *) printf 'quickstart: unknown mode "%s"\n\n' "$mode" >&2; usage 2 ;;
+esac
+
+with_peers=0
+jobs=${JOBS:-}
+while (($#)); do
+  case $1 in
+    --with-peers) with_peers=1 ;;
+    --jobs) [[ $# -ge 2 ]] || die "--jobs needs a number"; jobs=$2; shift ;;
+    --jobs=*) jobs=${1#--jobs=} ;;
+    -h | --help) usage 0 ;;
+    *) die "unknown option '$1' (try --help)" ;;
+  esac
+  shift
+done
+if [[ -z $jobs ]]; then
+  jobs=$(nproc 2>/dev/null || echo 2)
+fi
+[[ $jobs =~ ^[1-9][0-9]*$ ]] || die "--jobs wants a positive number, got '$jobs'"
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+build=$root/build
+cd "$root"
+
+# --- dependencies ------------------------------------------------------------
+is_installed() {
+  [[ $(dpkg-query -W -f='${Status}' "$1" 2>/dev/null) == "install ok installed" ]]
+}
+
+install_missing() {
+  local packages=("${REQUIRED_PACKAGES[@]}")
+  ((with_peers)) && packages+=("${PEER_PACKAGES[@]}")
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    say "not a Debian system: skipping package installation; make sure these (or their"
+    say "equivalents) are installed: ${packages[*]}"
+    return 0
+  fi
+  local missing=() p
+  for p in "${packages[@]}"; do
+    is_installed "$p" || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    say "dependencies: all ${#packages[@]} packages already installed"
+    return 0
+  fi
+  local sudo=()
+  if ((EUID != 0)); then
+    command -v sudo >/dev/null 2>&1 ||
+      die "missing packages: ${missing[*]}; run as root, or install them with apt-get"
+    sudo=(sudo)
+  fi
+  say "installing missing packages: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -q
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# --- build -------------------------------------------------------------------
+configure() {
+  say "configuring $build (Release, -O2, assertions on)"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O2 >/dev/null ||
+    die "cmake configuration failed (run: cmake -S . -B build to see why)"
+}
+
+install_missing
+[[ $mode == deps ]] && exit 0
+configure
+
+if [[ $mode == demo ]]; then
+  say "building cgal-subdiv with $jobs jobs"
+  cmake --build "$build" --target cgal-subdiv -j "$jobs"
+  exe=$build/src/cgal-subdiv
+  [[ -x $exe ]] || die "$exe was not built"
+  say "running: build/src/cgal-subdiv demo --output-dir out"
+  "$exe" demo --output-dir "$root/out"
+  exit 0
+fi
+
+# test
+say "building everything with $jobs jobs"
+cmake --build "$build" -j "$jobs"
+say "running the tests (ctest -j $jobs)"
+rc=0
+(cd "$build" && ctest --output-on-failure -j "$jobs" --timeout 1500) || rc=$?
+if ((rc == 0)); then
+  say "all tests passed"
+else
+  say "ctest failed with exit code $rc"
+fi
+exit "$rc"
