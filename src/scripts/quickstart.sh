@@ -102,8 +102,11 @@ install_missing
 configure
 
 if [[ $mode == demo ]]; then
+  targets=$(cmake --build "$build" --target help 2>/dev/null || true)
+  grep -Eq '(^|[[:space:]])cgal-subdiv(:|[[:space:]]|$)' <<<"$targets" ||
+    die "this checkout has no cgal-subdiv target yet (see src/CMakeLists.txt)"
   say "building cgal-subdiv with $jobs jobs"
-  cmake --build "$build" --target cgal-subdiv -j "$jobs"
+  cmake --build "$build" --target cgal-subdiv -j "$jobs" || die "building cgal-subdiv failed (see above)"
   exe=$build/src/cgal-subdiv
   [[ -x $exe ]] || die "$exe was not built"
   say "running: build/src/cgal-subdiv demo --output-dir out"
@@ -113,13 +116,8 @@ fi
 
 # test
 say "building everything with $jobs jobs"
-cmake --build "$build" -j "$jobs"
+cmake --build "$build" -j "$jobs" || die "the build failed (see above)"
 say "running the tests (ctest -j $jobs)"
-rc=0
-(cd "$build" && ctest --output-on-failure -j "$jobs" --timeout 1500) || rc=$?
-if ((rc == 0)); then
-  say "all tests passed"
-else
-  say "ctest failed with exit code $rc"
-fi
-exit "$rc"
+# ctest's summary stays the last thing printed, and its exit code is ours
+cd "$build"
+exec ctest --output-on-failure -j "$jobs" --timeout 1500
