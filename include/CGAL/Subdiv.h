@@ -16,5 +16,6 @@
 #include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/curves/curve_mask.h>
 #include <CGAL/Subdiv/curves/refine_polyline.h>
+#include <CGAL/Subdiv/analysis/curve_analysis.h>
 
 #endif // CGAL_SUBDIV_H
