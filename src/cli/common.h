@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// Types shared by the parts of the cgal-subdiv command-line tool.
+#ifndef CGAL_SUBDIV_CLI_COMMON_H
+#define CGAL_SUBDIV_CLI_COMMON_H
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv/curves/refine_polyline.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cgal_subdiv {
+
+using Exact = CGAL::Exact_rational;
+using Exact_kernel = CGAL::Simple_cartesian<Exact>;
+using Double_kernel = CGAL::Simple_cartesian<double>;
+
+/// A mistake on the command line itself (exit code 2).
+class Usage_error : public std::runtime_error
+{
+public:
+  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// A file or its content cannot be used (exit code 1).
+class Input_error : public std::runtime_error
+{
+public:
+  explicit Input_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// The points of an input file, every coordinate exact.
+struct Input_polyline
+{
+  int dimension = 2;
+  std::vector<std::array<Exact, 3>> points; // third coordinate 0 in 2D
+  std::vector<std::string> notes;            // what was read and what was ignored
+};
+
+enum class Scheme_kind { bezier, bspline, chaikin, corner_cutting, four_point };
+
+/// Which scheme, with its parameters as given (exact).
+struct Scheme_spec
+{
+  Scheme_kind kind = Scheme_kind::bspline;
+  int degree = 3;
+  Exact a = Exact(1) / Exact(4);
+  Exact b = Exact(3) / Exact(4);
+  Exact w = Exact(1) / Exact(16);
+};
+
+/// How to refine: a level count, or a flatness tolerance (Bezier only).
+struct Refine_spec
+{
+  int levels = 0;
+  bool closed = false;
+  CGAL::Subdiv::End_rule end_rule = CGAL::Subdiv::End_rule::shrink;
+  bool use_tolerance = false;
+  Exact tolerance = Exact(0);
+};
+
+/// One curve to compute: the scheme, the refinement, the kernel.
+struct Curve_job
+{
+  Scheme_spec scheme;
+  Refine_spec refine;
+  bool exact = false;
+};
+
+std::string scheme_keyword(Scheme_kind kind);
+/// e.g. "B-spline of degree 3", "corner cutting a=1/10 b=3/5", "four-point w=1/16"
+std::string describe(const Scheme_spec& scheme);
+/// e.g. "closed", "open, shrinking ends", "open, kept ends"
+std::string describe(const Refine_spec& refine);
+
+} // namespace cgal_subdiv
+
+#endif // CGAL_SUBDIV_CLI_COMMON_H

@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// The body of compute_curve(), included by curve_double.cpp and curve_exact.cpp
+// (one kernel each, so that the two compile in parallel).
+#ifndef CGAL_SUBDIV_CLI_CURVE_IMPL_H
+#define CGAL_SUBDIV_CLI_CURVE_IMPL_H
+
+#include "analysis_config.h"
+#include "curve.h"
+#include "numbers.h"
+#include "schemes.h"
+
+#include <CGAL/Subdiv/curves/refine_polyline.h>
+
+#include <cmath>
+
+namespace cgal_subdiv {
+namespace curve_impl {
+
+namespace S = CGAL::Subdiv;
+
+template <class Point>
+using Point_FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
+
+template <class Point>
+constexpr int dimension_of()
+{
+  return CGAL::Ambient_dimension<Point>::value;
+}
+
+template <class Point>
+std::vector<Point> make_points(const Input_polyline& input)
+{
+  using FT = Point_FT<Point>;
+  std::vector<Point> points;
+  points.reserve(input.points.size());
+  for(const auto& c : input.points) {
+    if constexpr(dimension_of<Point>() == 2)
+      points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]));
+    else
+      points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]), to_ft<FT>(c[2]));
+  }
+  return points;
+}
+
+template <class Point>
+auto to_double_points(const std::vector<Point>& points)
+{
+  using Double_point = std::conditional_t<dimension_of<Point>() == 2, Double_kernel::Point_2, Double_kernel::Point_3>;
+  std::vector<Double_point> result;
+  result.reserve(points.size());
+  for(const Point& p : points) {
+    if constexpr(dimension_of<Point>() == 2)
+      result.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    else
+      result.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  return result;
+}
+
+// the figure shows the projection onto the xy plane
+template <class Point>
+void add_level(Figure* figure, const std::vector<Point>& points)
+{
+  if(!figure)
+    return;
+  std::vector<std::array<double, 2>> level;
+  level.reserve(points.size());
+  for(const Point& p : points)
+    level.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+  figure->levels.push_back(std::move(level));
+}
+
+template <class Point, class Scheme>
+std::vector<Point> refine_once(const std::vector<Point>& points, const Scheme& scheme, const Refine_spec& refine)
+{
+  if constexpr(Is_bezier<Scheme>::value)
+    return S::bezier_subdivision(points, scheme.degree(),
+                                 S::Bezier_options().number_of_iterations(1).closed(refine.closed));
+  else
+    return S::refine_polyline(
+      points, scheme,
+      S::Polyline_options().number_of_iterations(1).closed(refine.closed).end_rule(refine.end_rule));
+}
+
+// Bezier "enough subdivisions": split until every segment is flat
+template <class Point, class Scheme>
+std::vector<Point> refine_to_tolerance(const std::vector<Point>& control, const Scheme& scheme,
+                                       const Refine_spec& refine)
+{
+  if constexpr(Is_bezier<Scheme>::value)
+    return S::bezier_subdivision_to_tolerance(control, scheme.degree(), to_ft<Point_FT<Point>>(refine.tolerance),
+                                              refine.closed, S::Polyline_options().max_output_points());
+  else
+    throw Usage_error("--tolerance applies to bezier only");
+}
+
+// all levels, one at a time, so that the figure can show each of them
+template <class Point, class Scheme>
+std::vector<Point> refine(const std::vector<Point>& control, const Scheme& scheme, const Refine_spec& refine,
+                          Figure* figure)
+{
+  add_level(figure, control);
+  if(refine.use_tolerance) {
+    std::vector<Point> result = refine_to_tolerance(control, scheme, refine);
+    add_level(figure, result);
+    return result;
+  }
+  // refuse a too large output before computing anything
+  S::internal::check_output_size(control.size(), refine.levels, S::Polyline_options().max_output_points());
+  // the first level is made even for --levels 0: it checks that the scheme applies
+  std::vector<Point> current = refine_once(control, scheme, refine);
+  if(refine.levels == 0)
+    return control;
+  add_level(figure, current);
+  for(int level = 2; level <= refine.levels; ++level) {
+    try {
+      current = refine_once(current, scheme, refine);
+    } catch(const S::Bad_input& e) { // e.g. shrinking ends: the polyline got too short
+      throw S::Bad_input("level " + std::to_string(level) + " of " + std::to_string(refine.levels) + ": " + e.what());
+    }
+    add_level(figure, current);
+  }
+  return current;
+}
+
+template <class Point>
+void write_points(const std::vector<Point>& points, std::ostream& out)
+{
+  for(const Point& p : points) {
+    for(int d = 0; d < dimension_of<Point>(); ++d)
+      out << (d ? " " : "") << format_number(p.cartesian(d));
+    out << '\n';
+  }
+}
+
+template <class Point>
+void add_curvature(Figure* figure, const std::vector<Point>& points, bool closed)
+{
+#if SUBDIV_CLI_WITH_ANALYSIS
+  if(!figure || points.size() < 3)
+    return;
+  const auto p = to_double_points(points);
+  figure->curvature = S::discrete_curvature(p, closed);
+  figure->arc_length.assign(1, 0.0);
+  for(std::size_t i = 1; i < p.size(); ++i)
+    figure->arc_length.push_back(figure->arc_length.back() + std::sqrt(CGAL::squared_distance(p[i - 1], p[i])));
+  figure->has_curvature = true;
+#else
+  (void)figure, (void)points, (void)closed;
+#endif
+}
+
+template <class Point>
+std::size_t compute(const Curve_job& job, const Input_polyline& input, std::ostream& out, Figure* figure)
+{
+  const std::vector<Point> control = make_points<Point>(input);
+  const std::vector<Point> result = with_scheme<Point_FT<Point>>(
+    job.scheme, [&](const auto& scheme) { return refine(control, scheme, job.refine, figure); });
+  write_points(result, out);
+  add_curvature(figure, result, job.refine.closed);
+  return result.size();
+}
+
+} // namespace curve_impl
+
+template <class Kernel>
+std::size_t compute_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out,
+                          Figure* figure)
+{
+  if(input.dimension == 3)
+    return curve_impl::compute<typename Kernel::Point_3>(job, input, points_out, figure);
+  return curve_impl::compute<typename Kernel::Point_2>(job, input, points_out, figure);
+}
+
+} // namespace cgal_subdiv
+
+#endif // CGAL_SUBDIV_CLI_CURVE_IMPL_H

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// Reading polylines, and writing files so that a failure leaves none behind.
+#ifndef CGAL_SUBDIV_CLI_FILES_H
+#define CGAL_SUBDIV_CLI_FILES_H
+
+#include "common.h"
+
+#include <fstream>
+#include <string>
+
+namespace cgal_subdiv {
+
+/*
+ * reads the points of `path`, in one of two formats (found from the first line
+ * that is not blank or a comment):
+ *  - plain text: one point per line, 2 or 3 coordinates, `#` comments;
+ *  - CGAL's polygon format: a count n, then 2n coordinates in any line layout.
+ *    Only the first polygon is read; what follows (holes, further polygons) is
+ *    described in `notes`.
+ * Coordinates are decimals or fractions, read exactly.
+ * \throws Input_error naming the file, the line and the text that is wrong
+ */
+Input_polyline read_polyline(const std::string& path);
+
+/*
+ * A file written under a temporary name in the same directory and renamed to
+ * its final name by `commit()`; destroyed without `commit()`, it removes the
+ * temporary file, so that a failed run leaves no partial output.
+ */
+class Atomic_file
+{
+public:
+  explicit Atomic_file(const std::string& path);
+  ~Atomic_file();
+  Atomic_file(const Atomic_file&) = delete;
+  Atomic_file& operator=(const Atomic_file&) = delete;
+
+  std::ostream& stream() { return m_out; }
+  /// \throws Input_error if writing failed
+  void commit();
+
+private:
+  std::string m_path;
+  std::string m_temporary;
+  std::ofstream m_out;
+  bool m_committed = false;
+};
+
+} // namespace cgal_subdiv
+
+#endif // CGAL_SUBDIV_CLI_FILES_H

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// cgal-subdiv: subdivision curves from the command line.
+#include "commands.h"
+#include "common.h"
+
+#include <CGAL/Subdiv/errors.h>
+
+#include <exception>
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const main_help = R"(usage: cgal-subdiv COMMAND [OPTIONS]
+
+Subdivision curves with CGAL Subdiv.
+
+Commands:
+  curve    refine a polyline from a file with a curve scheme (bezier, bspline,
+           chaikin, corner-cutting, four-point); optional SVG figure and
+           convergence report
+  demo     run every curve scheme on the bundled polygon and write points,
+           figures, convergence tables and an index to a directory (out/)
+
+Run 'cgal-subdiv COMMAND --help' for the options of a command.
+
+Exit status: 0 on success, 1 if the input cannot be used, 2 for a malformed
+command line. Errors are one line on stderr: "cgal-subdiv: error: ...".
+)";
+
+// one line, whatever the message (CGAL's own exceptions span several)
+int fail(std::string message, int code)
+{
+  for(char& c : message)
+    if(c == '\n' || c == '\r')
+      c = ' ';
+  std::cerr << "cgal-subdiv: error: " << message << std::endl;
+  return code;
+}
+
+int dispatch(const std::vector<std::string>& args, const std::string& program)
+{
+  if(args.empty()) {
+    std::cerr << main_help;
+    return 2;
+  }
+  const std::string& command = args.front();
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if(command == "-h" || command == "--help" || command == "help") {
+    std::cout << main_help;
+    return 0;
+  }
+  if(command == "curve")
+    return cgal_subdiv::curve_command(rest);
+  if(command == "demo")
+    return cgal_subdiv::demo_command(rest, program);
+  throw cgal_subdiv::Usage_error("unknown command '" + command + "' (expected curve or demo; see 'cgal-subdiv --help')");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try {
+    return dispatch(std::vector<std::string>(argv + 1, argv + argc), argc > 0 ? argv[0] : "cgal-subdiv");
+  } catch(const cgal_subdiv::Usage_error& e) {
+    return fail(e.what(), 2);
+  } catch(const std::bad_alloc&) {
+    return fail("out of memory", 1);
+  } catch(const std::exception& e) {
+    return fail(e.what(), 1);
+  } catch(...) {
+    return fail("unexpected failure", 1);
+  }
+}
