@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -86,6 +88,34 @@ std::vector<Point_2> star_polygon()
   for(int i = 0; i < 10; ++i) {
     const double r = (i % 2 == 0) ? 1.0 + 0.1 * i : 0.45;
     points.emplace_back(r * std::cos(2 * pi * i / 10), r * std::sin(2 * pi * i / 10));
+  }
+  return points;
+}
+
+// the demo polygon of cgal-subdiv (doc/data/polygon.txt): "x y" per line,
+// decimals or fractions p/q, '#' comments
+double parse_number(const std::string& token)
+{
+  const std::size_t slash = token.find('/');
+  if(slash == std::string::npos)
+    return std::stod(token);
+  return std::stod(token.substr(0, slash)) / std::stod(token.substr(slash + 1));
+}
+
+std::vector<Point_2> bundled_polygon()
+{
+  // beside this file: test/../doc/data (test/data need not exist)
+  const std::string here = __FILE__;
+  std::ifstream in(here.substr(0, here.find_last_of('/')) + "/../doc/data/polygon.txt");
+  std::vector<Point_2> points;
+  std::string line;
+  while(std::getline(in, line)) {
+    if(line.empty() || line[0] == '#')
+      continue;
+    std::istringstream fields(line);
+    std::string x, y;
+    if(fields >> x >> y)
+      points.emplace_back(parse_number(x), parse_number(y));
   }
   return points;
 }
@@ -453,7 +483,8 @@ TEST(Curve_measurements, discrete_curvature_of_regular_polygons)
 TEST(Curve_measurements, ratios_tend_to_the_predicted_rate)
 {
   const std::vector<std::vector<Point_2>> polygons = {random_closed_polygon(7, 12), random_closed_polygon(2026, 9),
-                                                      star_polygon()};
+                                                      star_polygon(), bundled_polygon()};
+  ASSERT_EQ(polygons.back().size(), 10u) << "doc/data/polygon.txt not found or changed";
   const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(10);
   for(std::size_t p = 0; p < polygons.size(); ++p) {
     const auto check = [&](const auto& scheme, const auto& exact_scheme) {
@@ -481,7 +512,8 @@ TEST(Curve_measurements, four_point_rates)
   // w = 1/16: the Jordan block at 1/4 makes the distances decay like k 4^-k,
   // so the ratio approaches 1/4 from above like (k + c + 1) / (4 (k + c))
   const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(13);
-  for(const auto& polygon : {random_closed_polygon(7, 12), star_polygon()}) {
+  for(const auto& polygon : {random_closed_polygon(7, 12), star_polygon(), bundled_polygon()}) {
+    ASSERT_GE(polygon.size(), 3u);
     const auto levels = S::measure_levels(polygon, S::Four_point_scheme<double>(1.0 / 16), options);
     for(int k = 8; k <= 13; ++k) {
       const double ratio = levels[static_cast<std::size_t>(k - 1)].ratio;

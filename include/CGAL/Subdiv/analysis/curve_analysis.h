@@ -54,9 +54,10 @@ struct Curve_analysis
   /// local subdivision matrix over the window, exact in FT (`local_subdivision_matrix()`)
   Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic> matrix;
   /// eigenvalues of `matrix` (Eigen's solver, in double), sorted by modulus, largest
-  /// first; ties by real part, then imaginary part, largest first. Powers of 1/2
-  /// are confirmed exactly with their algebraic multiplicity (ranks of
-  /// (S - lambda I)^k in FT) and reported exactly. Empty if Eigen failed.
+  /// first; ties by real part, then imaginary part, largest first. 1, 1/2, 1/4
+  /// and 1/8 are confirmed exactly with their algebraic multiplicity (ranks of
+  /// (S - lambda I)^k in FT) and reported exactly (for matrices up to 32 x 32).
+  /// Empty if Eigen failed.
   std::vector<std::complex<double>> eigenvalues;
   /// lambda0 = 1 is simple and every other |lambda| < 1 (tolerance 1e-8)
   bool one_is_simple_and_dominant = false;
@@ -119,17 +120,22 @@ Eigen::MatrixXd to_double_matrix(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::
 constexpr double eigenvalue_tolerance = 1e-8;
 
 // the spectral part of the analysis, shared by curve schemes and Bezier
-// Eigenvalues that are powers of 1/2 (1, 1/2, 1/4, ..., the usual ones of
-// stationary schemes) are confirmed exactly, with their algebraic
-// multiplicity, by ranks of (S - lambda I)^k in FT, and then reported exactly:
-// a defective eigenvalue (a Jordan block, as 1/4 of the four-point scheme) is
-// otherwise only found to about sqrt(machine epsilon) by a double solver.
+// The eigenvalues 1, 1/2, 1/4 and 1/8 (those the verdicts and the predicted
+// rate depend on) are confirmed exactly, with their algebraic multiplicity, by
+// ranks of (S - lambda I)^k in FT, and then reported exactly: a defective
+// eigenvalue (a Jordan block, as 1/4 of the four-point scheme) is otherwise
+// only found to about sqrt(machine epsilon) by a double solver. Smaller powers
+// of 1/2, and all eigenvalues of matrices larger than 32 x 32 (B-splines of
+// degree > 32), are left as computed: exact ranks cost O(n^3) operations on
+// growing rationals.
 template <class FT>
 void snap_dyadic_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S,
                              std::vector<std::complex<double>>& values)
 {
+  if(S.rows() > 32)
+    return;
   FT lambda(1);
-  for(int j = 0; j <= 60; ++j, lambda = lambda / FT(2)) {
+  for(int j = 0; j <= 3; ++j, lambda = lambda / FT(2)) {
     const double target = std::ldexp(1.0, -j);
     bool near = false;
     for(const auto& value : values)
@@ -217,7 +223,19 @@ void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
  * - `predicted_rate`: the largest |lambda| once one eigenvalue 1 and, if the
  *   scheme reproduces linear functions in its own parametrisation
  *   (`reproduces_linear()`), one eigenvalue 1/2 are removed. It is the rate
- *   that `measure_levels()` observes (cubic B-spline, Chaikin, four-point w = 1/16: 1/4).
+ *   that `measure_levels()` observes for B-splines, Chaikin, corner cutting
+ *   with b = a + 1/2 or b - a >= 1/2, four-point with w <= 1/16 (1/4 for the
+ *   cubic B-spline, Chaikin and four-point w = 1/16, there approached slowly,
+ *   like (k+1)/(4k), because 1/4 is a double eigenvalue with one eigenvector).
+ *   The local matrix only sees the neighbourhood of the dyadic points; where
+ *   the regularity is decided elsewhere (four-point with w > 1/16, whose
+ *   subdominant pair is complex; corner cutting with a + 1/2 > b and b - a < 1/2)
+ *   the observed rate is larger, between `predicted_rate` and about
+ *   \f$ 2^{-holder\_exponent} \f$.
+ *
+ * With a floating-point `FT`, divisibility by (1+z) is decided with a tolerance
+ * and fails for very high orders (B-splines of degree > 40): analyse with an
+ * exact `FT` (`CGAL::Exact_rational`) to get exact masks and verdicts.
  *
  * \tparam Scheme a model of `CurveSubdivisionScheme`
  * \throws Bad_input unless 1 <= max_steps <= 24

@@ -204,9 +204,9 @@ double iterated_scheme_norm(const Laurent_polynomial<FT>& c, int L)
   for(int l = 1; l < L; ++l) {
     stride *= 2;
     next.assign((product.size() - 1) + (base.size() - 1) * stride + 1, 0.0);
-    for(std::size_t i = 0; i < product.size(); ++i)
-      if(product[i] != 0.0)
-        for(std::size_t k = 0; k < base.size(); ++k)
+    for(std::size_t k = 0; k < base.size(); ++k) // k outside: sequential memory access
+      if(base[k] != 0.0)
+        for(std::size_t i = 0; i < product.size(); ++i)
           next[i + k * stride] += product[i] * base[k];
     product.swap(next);
   }
@@ -245,8 +245,9 @@ struct Difference_scheme_bound
  *
  * Returns one line per m = 0, 1, ... for which the division is exact, up to
  * `max_order` (the loop stops at the first m where \f$ (1+z)^{m+1} \f$ does not
- * divide). Norms are tried for L = 1..`max_steps`; a C^m that needs more steps
- * is reported as not proven (the method is then inconclusive, not negative).
+ * divide). Norms are tried for L = 1..`max_steps`, as long as the L-step
+ * symbol has at most 2^23 coefficients; a C^m that needs more steps is
+ * reported as not proven (the method is then inconclusive, not negative).
  * \throws Bad_input unless 1 <= max_steps <= 24 and max_order >= 0
  */
 template <class FT>
@@ -266,6 +267,10 @@ difference_scheme_bounds(const Laurent_polynomial<FT>& symbol, int max_steps = 1
     bound.norm = std::numeric_limits<double>::infinity();
     double best_exponent = -1;
     for(int L = 1; L <= max_steps; ++L) {
+      // the L-step symbol has (length - 1)(2^L - 1) + 1 coefficients: at most 2^23
+      if(static_cast<double>(bound.symbol.coefficients.size() - 1) * (std::ldexp(1.0, L) - 1) + 1 >
+         std::ldexp(1.0, 23))
+        break;
       const double eta = iterated_scheme_norm(bound.symbol, L);
       if(eta < 1) {
         const double exponent = eta > 0 ? (std::min)(1.0, -std::log2(eta) / L) : 1.0;
@@ -276,8 +281,8 @@ difference_scheme_bounds(const Laurent_polynomial<FT>& symbol, int max_steps = 1
         }
       } else if(!(best_exponent >= 0) && eta < bound.norm)
         bound.norm = eta;
-      if(best_exponent >= 1)
-        break; // cannot do better than a Lipschitz bound
+      if(best_exponent >= 1 - 1e-12)
+        break; // cannot do better than a Lipschitz bound (up to rounding of the norm)
     }
     bound.contractive = best_exponent >= 0;
     bound.holder = bound.contractive ? m + best_exponent : 0;
