@@ -115,6 +115,8 @@ subdiv_cli_error(zero_denominator 1 "zero_denominator.txt:2: .*zero denominator"
   ARGS curve ${SUBDIV_CLI_DIR}/zero_denominator.txt ${out} --scheme chaikin --levels 1)
 subdiv_cli_error(short_polygon 1 "announces 5 points, but only 6 coordinates follow"
   ARGS curve ${SUBDIV_CLI_DIR}/short_polygon.dat ${out} --scheme chaikin --levels 1)
+subdiv_cli_error(too_large_for_double 1 "input point 3: the number 1000.* is too large for a double \\(use --exact\\)"
+  ARGS curve ${SUBDIV_CLI_DIR}/huge.txt ${out} --scheme chaikin --levels 1)
 subdiv_cli_error(too_few_points 1 "at least 2 points, got 1"
   ARGS curve ${SUBDIV_CLI_DIR}/one_point.txt ${out} --scheme chaikin --levels 1)
 subdiv_cli_error(too_short_after_shrinking 1 "level 2 of 2: .*too short for four-point"

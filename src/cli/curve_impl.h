@@ -36,10 +36,14 @@ std::vector<Point> make_points(const Input_polyline& input)
   std::vector<Point> points;
   points.reserve(input.points.size());
   for(const auto& c : input.points) {
-    if constexpr(dimension_of<Point>() == 2)
-      points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]));
-    else
-      points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]), to_ft<FT>(c[2]));
+    try {
+      if constexpr(dimension_of<Point>() == 2)
+        points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]));
+      else
+        points.emplace_back(to_ft<FT>(c[0]), to_ft<FT>(c[1]), to_ft<FT>(c[2]));
+    } catch(const Input_error& e) {
+      throw Input_error("input point " + std::to_string(points.size() + 1) + ": " + e.what());
+    }
   }
   return points;
 }

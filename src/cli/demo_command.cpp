@@ -144,6 +144,8 @@ struct Demo_row
 Demo_row run_case(const Demo_case& c, const Input_polyline& input, const fs::path& dir)
 {
   Demo_row row{c.name, describe(c.job.scheme), describe(c.job.refine), 0, Report_summary(), ""};
+  row.summary.last_ratio = row.summary.predicted_rate = std::nan("");
+  row.summary.verdict = "n/a";
   try {
     const Input_polyline used = bezier_subset(input, c.job);
     Atomic_file points((dir / (c.name + ".txt")).string());
@@ -153,7 +155,10 @@ Demo_row run_case(const Demo_case& c, const Input_polyline& input, const fs::pat
     row.points = run_curve(c.job, used, points.stream(), &figure);
     write_svg(figure, svg.stream());
     table.stream() << "# " << c.name << "\n\n![" << c.name << "](" << c.name << ".svg)\n\n";
-    row.summary = write_report(c.job, used, table.stream());
+    if(report_available())
+      row.summary = write_report(c.job, used, table.stream());
+    else
+      table.stream() << "(no convergence table: cgal-subdiv was built without the analysis layer)\n";
     points.commit();
     svg.commit();
     table.commit();

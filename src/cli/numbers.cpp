@@ -122,8 +122,12 @@ int parse_int(const std::string& text)
 double nearest_double(const Exact& x)
 {
   std::pair<double, double> range = CGAL::to_interval(x);
-  if(!std::isfinite(range.first) || !std::isfinite(range.second))
-    throw Input_error("the number " + format_exact(x) + " is too large for a double (use --exact)");
+  if(!std::isfinite(range.first) || !std::isfinite(range.second)) {
+    std::string text = format_exact(x);
+    if(text.size() > 32)
+      text = text.substr(0, 12) + "... (" + std::to_string(text.size()) + " characters)";
+    throw Input_error("the number " + text + " is too large for a double (use --exact)");
+  }
   // bisect until lo and hi are neighbours, then pick the nearer (ties: even)
   while(range.first != range.second &&
         std::nextafter(range.first, std::numeric_limits<double>::infinity()) != range.second) {

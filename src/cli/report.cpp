@@ -230,6 +230,8 @@ Report_summary write_report(const Curve_job& job, const Input_polyline& input, s
   return summary;
 }
 
+bool report_available() { return true; }
+
 } // namespace cgal_subdiv
 
 #else // SUBDIV_CLI_WITH_ANALYSIS
@@ -241,6 +243,8 @@ Report_summary write_report(const Curve_job&, const Input_polyline&, std::ostrea
   throw Input_error("this cgal-subdiv was built without the analysis layer "
                     "(CGAL/Subdiv/analysis/curve_analysis.h): no --report");
 }
+
+bool report_available() { return false; }
 
 } // namespace cgal_subdiv
 

@@ -30,6 +30,9 @@ struct Report_summary
  */
 Report_summary write_report(const Curve_job& job, const Input_polyline& input, std::ostream& out);
 
+/// false if the tool was built without the analysis layer (see analysis_config.h)
+bool report_available();
+
 } // namespace cgal_subdiv
 
 #endif // CGAL_SUBDIV_CLI_REPORT_H
