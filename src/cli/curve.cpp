@@ -52,7 +52,8 @@ std::string describe(const Refine_spec& refine)
 std::size_t run_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out, Figure* figure)
 {
   if(figure) {
-    figure->title = describe(job.scheme) + " (" + describe(job.refine) + ")";
+    figure->title = describe(job.scheme) + " (" + describe(job.refine) + ")" +
+                    (input.dimension == 3 ? ", projected onto the xy plane" : "");
     figure->closed = job.refine.closed;
   }
   if(job.exact)
