@@ -18,4 +18,7 @@
 #include <CGAL/Subdiv/curves/refine_polyline.h>
 #include <CGAL/Subdiv/analysis/curve_analysis.h>
 
+#include <CGAL/Subdiv/subdivide.h>
+#include <CGAL/Subdiv/surface_subdivision.h>
+
 #endif // CGAL_SUBDIV_H

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_INTERNAL_REBUILD_MESH_H
+#define CGAL_SUBDIV_INTERNAL_REBUILD_MESH_H
+
+#include <CGAL/Surface_mesh/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <CGAL/Subdiv/errors.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * The new connectivity of one level, as the host knows it: every face is a
+ * run of corners, and corner k of a face holds the new vertex it starts at
+ * and the id of the new halfedge from corner k to corner k+1. Halfedge ids
+ * come in pairs: id 2e and 2e+1 are the two halves of new edge e, so id ^ 1
+ * is the opposite. Knowing the edges lets `rebuild_mesh` wire the halfedge
+ * structure directly, with no search for opposite halfedges.
+ * Each new face also records the ordinal of the old face it lies in.
+ */
+class Face_soup
+{
+public:
+  // Indices are stored in 32 bits, like Surface_mesh's own: half the memory
+  // traffic of size_t on the hot path.
+  using Index = std::uint32_t;
+
+  Face_soup(std::size_t vertices, std::size_t edges) : m_vertex_count(vertices), m_edge_count(edges)
+  {
+    require(2 * edges < (std::size_t(1) << 32) && vertices < (std::size_t(1) << 32),
+            "the refined mesh would have more than 2^31 edges");
+  }
+
+  void reserve(std::size_t faces, std::size_t corners)
+  {
+    m_ends.reserve(faces);
+    m_parents.reserve(faces);
+    m_vertices.reserve(corners);
+    m_halfedges.reserve(corners);
+  }
+
+  /// adds corner (vertex, halfedge id to the next corner) to the open face
+  void corner(std::size_t vertex, std::size_t halfedge)
+  {
+    m_vertices.push_back(static_cast<Index>(vertex));
+    m_halfedges.push_back(static_cast<Index>(halfedge));
+  }
+
+  /// closes the open face
+  void close_face(std::size_t parent)
+  {
+    m_ends.push_back(m_vertices.size());
+    m_parents.push_back(static_cast<Index>(parent));
+  }
+
+  std::size_t number_of_vertices() const { return m_vertex_count; }
+  std::size_t number_of_edges() const { return m_edge_count; }
+  std::size_t number_of_faces() const { return m_parents.size(); }
+  std::size_t face_begin(std::size_t f) const { return f == 0 ? 0 : m_ends[f - 1]; }
+  std::size_t face_end(std::size_t f) const { return m_ends[f]; }
+  std::size_t vertex(std::size_t corner) const { return m_vertices[corner]; }
+  std::size_t halfedge(std::size_t corner) const { return m_halfedges[corner]; }
+  std::size_t parent(std::size_t f) const { return m_parents[f]; }
+
+private:
+  std::size_t m_vertex_count;
+  std::size_t m_edge_count;
+  std::vector<Index> m_vertices;
+  std::vector<Index> m_halfedges;
+  std::vector<std::size_t> m_ends; // one past the last corner of each face
+  std::vector<Index> m_parents;
+};
+
+// Empty the mesh but keep its property maps, so that a vertex point map (or
+// any other map) the caller holds stays valid and grows with the new elements.
+template <class Mesh>
+void clear_keeping_properties(Mesh& mesh)
+{
+  CGAL::clear(mesh);
+}
+
+template <class Point>
+void clear_keeping_properties(CGAL::Surface_mesh<Point>& mesh)
+{
+  mesh.clear_without_removing_property_maps();
+}
+
+/*
+ * Replaces the mesh by the new level through the low-level functions of
+ * `MutableFaceGraph`: vertices, edges and faces are created in the order of
+ * the soup (new vertex i gets points[i]), then every halfedge is wired.
+ * Returns the new vertex and face descriptors in soup order if asked.
+ */
+template <class Mesh, class VertexPointMap, class Point>
+void rebuild_mesh(Mesh& mesh, const VertexPointMap& vpm, const std::vector<Point>& points, const Face_soup& soup,
+                  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>* new_vertices = nullptr,
+                  std::vector<typename boost::graph_traits<Mesh>::face_descriptor>* new_faces = nullptr)
+{
+  using GT = boost::graph_traits<Mesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  clear_keeping_properties(mesh);
+  CGAL::reserve(mesh, static_cast<typename GT::vertices_size_type>(soup.number_of_vertices()),
+                static_cast<typename GT::edges_size_type>(soup.number_of_edges()),
+                static_cast<typename GT::faces_size_type>(soup.number_of_faces()));
+
+  std::vector<vertex_descriptor> vertex_of(soup.number_of_vertices());
+  for(std::size_t i = 0; i < vertex_of.size(); ++i) {
+    vertex_of[i] = add_vertex(mesh);
+    put(vpm, vertex_of[i], points[i]);
+  }
+  std::vector<halfedge_descriptor> halfedge_of(2 * soup.number_of_edges());
+  for(std::size_t e = 0; e < soup.number_of_edges(); ++e) {
+    const halfedge_descriptor h = halfedge(add_edge(mesh), mesh);
+    halfedge_of[2 * e] = h;
+    halfedge_of[2 * e + 1] = opposite(h, mesh);
+  }
+  // halfedges of faces; a halfedge also names the target of its opposite
+  std::vector<char> has_face(halfedge_of.size(), 0);
+  std::vector<face_descriptor> face_of(soup.number_of_faces());
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f) {
+    const face_descriptor face = add_face(mesh);
+    face_of[f] = face;
+    const std::size_t begin = soup.face_begin(f), end = soup.face_end(f);
+    for(std::size_t k = begin; k < end; ++k) {
+      const std::size_t next_corner = (k + 1 == end) ? begin : k + 1;
+      const std::size_t id = soup.halfedge(k);
+      const halfedge_descriptor h = halfedge_of[id];
+      const vertex_descriptor to = vertex_of[soup.vertex(next_corner)];
+      set_target(h, to, mesh);
+      set_target(halfedge_of[id ^ 1], vertex_of[soup.vertex(k)], mesh);
+      set_next(h, halfedge_of[soup.halfedge(next_corner)], mesh);
+      set_face(h, face, mesh);
+      set_halfedge(to, h, mesh);
+      has_face[id] = 1;
+    }
+    set_halfedge(face, halfedge_of[soup.halfedge(begin)], mesh);
+  }
+  // border halfedges: no face; the next one starts where this one ends
+  for(std::size_t id = 0; id < halfedge_of.size(); ++id)
+    if(!has_face[id])
+      set_face(halfedge_of[id], GT::null_face(), mesh);
+  for(std::size_t id = 0; id < halfedge_of.size(); ++id) {
+    if(has_face[id])
+      continue;
+    const halfedge_descriptor border = halfedge_of[id];
+    // rotate around target(border), from the face halfedge leaving it, to the border halfedge leaving it
+    halfedge_descriptor around = halfedge_of[id ^ 1];
+    while(!is_border(around, mesh))
+      around = opposite(prev(around, mesh), mesh);
+    set_next(border, around, mesh);
+    set_halfedge(target(border, mesh), border, mesh); // border vertices keep a border halfedge
+  }
+
+  if(new_vertices)
+    new_vertices->swap(vertex_of);
+  if(new_faces)
+    new_faces->swap(face_of);
+}
+
+template <class P>
+void set_descriptors(const CGAL::Surface_mesh<P>&, const Face_soup& soup,
+                     std::vector<typename CGAL::Surface_mesh<P>::Vertex_index>* new_vertices,
+                     std::vector<typename CGAL::Surface_mesh<P>::Face_index>* new_faces)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  if(new_vertices) {
+    new_vertices->clear();
+    for(std::size_t i = 0; i < soup.number_of_vertices(); ++i)
+      new_vertices->push_back(typename SM::Vertex_index(static_cast<typename SM::size_type>(i)));
+  }
+  if(new_faces) {
+    new_faces->clear();
+    for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+      new_faces->push_back(typename SM::Face_index(static_cast<typename SM::size_type>(f)));
+  }
+}
+
+
+// Surface_mesh: the mesh is resized to the new counts, and vertex i, halfedge
+// id and face f of the soup are the mesh's indices i, id and f, so nothing is
+// looked up and no element is pushed one by one. The mesh is not cleared
+// (that would free and reallocate every array): old vertices keep their
+// indices, and so the values of other vertex property maps; values of other
+// edge, halfedge and face property maps are stale and must be carried
+// explicitly (see `Vertex_data` and face inheritance).
+template <class P, class VertexPointMap, class Point>
+void rebuild_mesh(CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const std::vector<Point>& points,
+                  const Face_soup& soup,
+                  std::vector<typename CGAL::Surface_mesh<P>::Vertex_index>* new_vertices = nullptr,
+                  std::vector<typename CGAL::Surface_mesh<P>::Face_index>* new_faces = nullptr)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using V = typename SM::Vertex_index;
+  using H = typename SM::Halfedge_index;
+  using F = typename SM::Face_index;
+
+  CGAL_precondition(!mesh.has_garbage());
+  mesh.resize(static_cast<typename SM::size_type>(soup.number_of_vertices()),
+              static_cast<typename SM::size_type>(soup.number_of_edges()),
+              static_cast<typename SM::size_type>(soup.number_of_faces()));
+  for(std::size_t i = 0; i < soup.number_of_vertices(); ++i)
+    put(vpm, V(static_cast<typename SM::size_type>(i)), points[i]);
+  std::vector<char> has_face(2 * soup.number_of_edges(), 0);
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f) {
+    const F face(static_cast<typename SM::size_type>(f));
+    const std::size_t begin = soup.face_begin(f), end = soup.face_end(f);
+    for(std::size_t k = begin; k < end; ++k) {
+      const std::size_t next_corner = (k + 1 == end) ? begin : k + 1;
+      const std::size_t id = soup.halfedge(k);
+      const H h(static_cast<typename SM::size_type>(id));
+      const V to(static_cast<typename SM::size_type>(soup.vertex(next_corner)));
+      mesh.set_target(h, to);
+      mesh.set_next(h, H(static_cast<typename SM::size_type>(soup.halfedge(next_corner))));
+      mesh.set_face(h, face);
+      mesh.set_halfedge(to, h);
+      has_face[id] = 1;
+    }
+    mesh.set_halfedge(face, H(static_cast<typename SM::size_type>(soup.halfedge(begin))));
+  }
+  if(soup.face_end(soup.number_of_faces() - 1) == has_face.size())
+    return set_descriptors(mesh, soup, new_vertices, new_faces); // closed: every halfedge has a face
+  // border halfedges: no face; they end where their opposite starts, and the
+  // next one starts where this one ends
+  for(std::size_t id = 0; id < has_face.size(); ++id)
+    if(!has_face[id]) {
+      const H border(static_cast<typename SM::size_type>(id));
+      mesh.set_face(border, SM::null_face());
+      mesh.set_target(border, mesh.target(mesh.prev(H(static_cast<typename SM::size_type>(id ^ 1)))));
+    }
+  for(std::size_t id = 0; id < has_face.size(); ++id) {
+    if(has_face[id])
+      continue;
+    const H border(static_cast<typename SM::size_type>(id));
+    // rotate around target(border), from the face halfedge leaving it, to the border halfedge leaving it
+    H around(static_cast<typename SM::size_type>(id ^ 1));
+    while(!mesh.is_border(around))
+      around = mesh.opposite(mesh.prev(around));
+    mesh.set_next(border, around);
+    mesh.set_halfedge(mesh.target(border), border);
+  }
+  set_descriptors(mesh, soup, new_vertices, new_faces);
+}
+
+} // namespace internal
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_INTERNAL_REBUILD_MESH_H

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_LOOP_MASK_H
+#define CGAL_SUBDIV_MASKS_LOOP_MASK_H
+
+#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/loop_weights.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * Loop subdivision [Loop 1987] on triangle meshes; split: 1-to-4 triangle split.
+ *
+ * - interior edge: 3/8 for its two ends, 1/8 for the two opposite vertices;
+ * - interior vertex of valence n: \f$ (1 - n\beta_n) v + \beta_n \sum_i v_i \f$,
+ *   with \f$\beta_n\f$ from `Beta` (`Loop_beta` by default, `Warren_beta`);
+ * - border edge: its midpoint; border vertex: 1/8, 6/8, 1/8 with its two
+ *   border neighbours (the cubic B-spline rules, so the border is a cubic
+ *   B-spline curve of the border polygon).
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Beta `Loop_beta` or `Warren_beta`
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, class Beta = Loop_beta>
+class Loop_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Triangle_quadrisection<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  std::string name() const { return "Loop (" + Beta::name() + " beta)"; }
+  bool is_interpolating() const { return false; }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  {
+    // one walk around v gives its valence and, on the border, its border halfedge
+    int n = 0;
+    halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+      ++n;
+      if(CGAL::is_border(h, mesh))
+        border_in = h;
+    }
+    if(border_in != boost::graph_traits<Mesh>::null_halfedge()) { // border vertex
+      acc.add(v, FT(6) / FT(8));
+      acc.add(source(border_in, mesh), FT(1) / FT(8));
+      acc.add(target(next(border_in, mesh), mesh), FT(1) / FT(8));
+      return;
+    }
+    const FT beta = Beta::template beta<FT>(n);
+    acc.add(v, FT(1) - FT(n) * beta);
+    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
+      acc.add(u, beta);
+  }
+
+  template <class Accumulator>
+  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    if(CGAL::is_border_edge(h, mesh)) { // border edge
+      acc.add(source(h, mesh), FT(1) / FT(2));
+      acc.add(target(h, mesh), FT(1) / FT(2));
+      return;
+    }
+    acc.add(source(h, mesh), FT(3) / FT(8));
+    acc.add(target(h, mesh), FT(3) / FT(8));
+    acc.add(target(next(h, mesh), mesh), FT(1) / FT(8));
+    acc.add(target(next(opposite(h, mesh), mesh), mesh), FT(1) / FT(8));
+  }
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_LOOP_MASK_H

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_SUBDIVIDE_H
+#define CGAL_SUBDIV_SUBDIVIDE_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/internal/mesh_checks.h>
+#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * The point accumulator of surface masks: sums weight * (point - ORIGIN)
+ * over the vertices a mask reports, then makes one point.
+ */
+template <class VertexPointMap>
+class Mesh_point_sum
+{
+public:
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using FT = Point_FT<Point>;
+
+  explicit Mesh_point_sum(const VertexPointMap& vpm) : m_vpm(vpm), m_sum(CGAL::NULL_VECTOR) {}
+
+  template <class VertexDescriptor>
+  void add(VertexDescriptor v, const FT& weight)
+  {
+    m_sum = m_sum + (get(m_vpm, v) - CGAL::ORIGIN) * weight;
+  }
+
+  Point point() const { return CGAL::ORIGIN + m_sum; }
+
+private:
+  const VertexPointMap& m_vpm;
+  Point_vector<Point> m_sum;
+};
+
+// Surface_mesh keeps removed elements until collect_garbage(); the hosts
+// number elements densely, so garbage is collected first (the mesh is the
+// same mesh afterwards).
+template <class Mesh>
+void make_indices_dense(Mesh&)
+{
+}
+
+template <class Point>
+void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
+{
+  if(mesh.has_garbage())
+    mesh.collect_garbage();
+}
+
+/// one level: the host numbers the new vertices and makes the new faces, the
+/// mask gives every new vertex its weights
+template <class Mask, class Mesh, class VertexPointMap>
+void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
+{
+  using Host = typename Mask::Host;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  const Host host(mesh);
+  std::vector<Point> points(host.number_of_new_vertices());
+  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+    Mesh_point_sum<VertexPointMap> sum(vpm);
+    report(sum);
+    points[j] = sum.point();
+  });
+  const Face_soup soup = host.faces();
+  rebuild_mesh(mesh, vpm, points, soup);
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivFunctions
+ * refines `mesh` in place `number_of_iterations` times with the rules of
+ * `mask` on the topological split of `Mask::Host`.
+ *
+ * \tparam PolygonMesh a model of `MutableFaceGraph`
+ * \tparam Mask a model of `SurfaceSubdivisionMask` (`Loop_mask`, ...)
+ * \param np optional named parameters:
+ *   - `number_of_iterations` (default 1): how many levels;
+ *   - `vertex_point_map` (default the mesh's internal point map): where the
+ *     points are read and written; its value type's kernel FT must be the
+ *     mask's `Number_type`.
+ *
+ * \throws Bad_input when the mesh does not suit the scheme (empty, isolated or
+ * non-manifold vertices, non-finite coordinates, a face of the wrong size) or
+ * when the output would not fit in memory. The mesh is then unchanged.
+ */
+template <class PolygonMesh, class Mask, class NamedParameters = parameters::Default_named_parameters>
+void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Host = typename Mask::Host;
+
+  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, mesh));
+  const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1);
+
+  internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
+  internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
+  internal::make_indices_dense(mesh);
+  for(int level = 0; level < levels; ++level)
+    internal::refine_once(mesh, mask, vpm);
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_SUBDIVIDE_H

@@ -1,0 +1,163 @@
+// Loop subdivision: agreement with CGAL's Subdivision_method_3, exact weights, bad input.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace S = CGAL::Subdiv;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+namespace {
+
+std::string shared_mesh(const std::string& name) { return std::string(SUBDIV_SHARED_DATA_DIR) + "/meshes/" + name; }
+
+// largest distance from a point of `a` to the nearest point of `b`, relative to the bounding box diagonal
+template <class MeshA, class MeshB>
+double position_mismatch(const MeshA& a, const MeshB& b)
+{
+  std::vector<K::Point_3> pb;
+  for(auto v : vertices(b))
+    pb.push_back(get(CGAL::vertex_point, b, v));
+  std::sort(pb.begin(), pb.end());
+  const auto box = CGAL::bbox_3(pb.begin(), pb.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  double worst = 0;
+  for(auto v : vertices(a)) {
+    const K::Point_3 p = get(CGAL::vertex_point, a, v);
+    const double eps = 1e-9 * diagonal;
+    double best = 1e300;
+    for(auto it = std::lower_bound(pb.begin(), pb.end(), K::Point_3(p.x() - eps, p.y(), p.z()));
+        it != pb.end() && it->x() <= p.x() + eps; ++it)
+      best = std::min(best, CGAL::squared_distance(*it, p));
+    worst = std::max(worst, std::sqrt(best));
+  }
+  return worst / diagonal;
+}
+
+} // namespace
+
+TEST(Loop, matches_cgal_subdivision_method_3_closed_and_with_border)
+{
+  for(const std::string name : {"cgal/elephant.off", "cgal/mesh_with_border.off", "cgal/tetrahedron.off"}) {
+    Mesh ours, theirs;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), ours)) << name;
+    theirs = ours;
+    S::loop_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+    CGAL::Subdivision_method_3::Loop_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
+    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
+    EXPECT_TRUE(ours.is_valid(false)) << name;
+    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
+    EXPECT_LT(position_mismatch(theirs, ours), 1e-12) << name;
+  }
+}
+
+TEST(Loop, works_on_polyhedron_3)
+{
+  CGAL::Polyhedron_3<K> poly;
+  Mesh sm;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/mesh_with_border.off"), poly));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/mesh_with_border.off"), sm));
+  S::loop_subdivision(poly, CGAL::parameters::number_of_iterations(2));
+  S::loop_subdivision(sm, CGAL::parameters::number_of_iterations(2));
+  EXPECT_TRUE(poly.is_valid());
+  EXPECT_EQ(num_vertices(poly), num_vertices(sm));
+  EXPECT_LT(position_mismatch(poly, sm), 1e-14);
+}
+
+TEST(Loop, exact_kernel_weights_and_counts)
+{
+  using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using P = KE::Point_3;
+  using FT = KE::FT;
+  CGAL::Surface_mesh<P> octahedron; // every vertex has valence 4: Loop's beta 31/256 is rational there
+  const P top(0, 0, 1), bottom(0, 0, -1), e[4] = {P(1, 0, 0), P(0, 1, 0), P(-1, 0, 0), P(0, -1, 0)};
+  auto t = octahedron.add_vertex(top), b = octahedron.add_vertex(bottom);
+  decltype(t) ring[4];
+  for(int i = 0; i < 4; ++i)
+    ring[i] = octahedron.add_vertex(e[i]);
+  for(int i = 0; i < 4; ++i) {
+    octahedron.add_face(t, ring[i], ring[(i + 1) % 4]);
+    octahedron.add_face(b, ring[(i + 1) % 4], ring[i]);
+  }
+  S::loop_subdivision(octahedron);
+  EXPECT_EQ(num_vertices(octahedron), 6u + 12u);
+  EXPECT_EQ(num_faces(octahedron), 32u);
+  // old vertex: (1 - 4 beta) top + beta * (sum of the ring, which is 0): z = 1 - 124/256
+  const P moved_top = octahedron.point(decltype(t)(0));
+  EXPECT_EQ(moved_top, P(0, 0, FT(1) - FT(4 * 31) / FT(256)));
+  // edge top-e0: 3/8 top + 3/8 e0 + 1/8 e1 + 1/8 e3 = (3/8, 0, 3/8)
+  bool found = false;
+  for(auto v : vertices(octahedron))
+    found = found || octahedron.point(v) == P(FT(3) / FT(8), 0, FT(3) / FT(8));
+  EXPECT_TRUE(found);
+}
+
+TEST(Loop, epeck_mesh_compiles_and_runs)
+{
+  using KE = CGAL::Exact_predicates_exact_constructions_kernel;
+  CGAL::Surface_mesh<KE::Point_3> mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), mesh));
+  S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(num_faces(mesh), 64u);
+}
+
+TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
+{
+  const auto message = [](Mesh& mesh, int levels = 1) -> std::string {
+    try {
+      S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+    } catch(const S::Bad_input& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  Mesh empty;
+  EXPECT_NE(message(empty).find("empty"), std::string::npos);
+
+  Mesh quad;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/cube_quad.off"), quad));
+  const Mesh quad_copy = quad;
+  const std::string not_triangles = message(quad);
+  EXPECT_NE(not_triangles.find("faces all have 3 vertices; face 0 has 4"), std::string::npos) << not_triangles;
+  EXPECT_EQ(num_faces(quad), num_faces(quad_copy));
+
+  Mesh isolated;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), isolated));
+  isolated.add_vertex(K::Point_3(5, 5, 5));
+  EXPECT_NE(message(isolated).find("vertex 4 is isolated"), std::string::npos) << message(isolated);
+  EXPECT_EQ(num_faces(isolated), 4u);
+
+  Mesh broken;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), broken));
+  broken.point(decltype(broken)::Vertex_index(2)) = K::Point_3(std::nan(""), 0, 0);
+  EXPECT_NE(message(broken).find("vertex 2 has a non-finite coordinate"), std::string::npos);
+
+  // two triangles sharing one vertex (a bow tie): a non-manifold vertex
+  Mesh pinched;
+  const auto o = pinched.add_vertex(K::Point_3(0, 0, 0));
+  const auto a = pinched.add_vertex(K::Point_3(1, 0, 0)), b = pinched.add_vertex(K::Point_3(1, 1, 0));
+  const auto c = pinched.add_vertex(K::Point_3(-1, 0, 0)), d = pinched.add_vertex(K::Point_3(-1, -1, 0));
+  ASSERT_NE(pinched.add_face(o, a, b), Mesh::null_face());
+  ASSERT_NE(pinched.add_face(o, c, d), Mesh::null_face());
+  const std::string pinched_message = message(pinched);
+  EXPECT_NE(pinched_message.find("vertex 0 is non-manifold"), std::string::npos) << pinched_message;
+
+  Mesh big;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/elephant.off"), big));
+  EXPECT_NE(message(big, 40).find("memory"), std::string::npos);
+  EXPECT_NE(message(big, -1).find("negative"), std::string::npos);
+  EXPECT_EQ(num_faces(big), 5558u);
+}
