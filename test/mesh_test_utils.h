@@ -1,0 +1,96 @@
+// Helpers shared by the surface tests.
+#ifndef CGAL_SUBDIV_TEST_MESH_TEST_UTILS_H
+#define CGAL_SUBDIV_TEST_MESH_TEST_UTILS_H
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/number_utils.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace testing_utils {
+
+using Double_point = CGAL::Simple_cartesian<double>::Point_3;
+
+/// path of a file in ../shared/data/meshes
+inline std::string shared_mesh(const std::string& name)
+{
+  return std::string(SUBDIV_SHARED_DATA_DIR) + "/meshes/" + name;
+}
+
+/// true when ../shared/data is beside the checkout (tests that need it skip otherwise)
+inline bool have_shared_data()
+{
+  return std::ifstream(shared_mesh("SOURCES.md")).good();
+}
+
+#define SUBDIV_REQUIRE_SHARED_DATA()                                                                                \
+  if(!testing_utils::have_shared_data())                                                                           \
+  GTEST_SKIP() << "../shared/data is not beside the checkout"
+
+template <class Mesh>
+std::vector<Double_point> double_points(const Mesh& mesh)
+{
+  std::vector<Double_point> points;
+  for(auto v : vertices(mesh)) {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  return points;
+}
+
+inline double diagonal(const std::vector<Double_point>& points)
+{
+  const auto box = CGAL::bbox_3(points.begin(), points.end());
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
+/// largest distance from a point of `a` to the nearest point of `b`, relative
+/// to the bounding-box diagonal of `b`: vertices are matched by position, not
+/// by order. Assumes the two point sets are close (searches a thin x-slab).
+inline double position_mismatch(const std::vector<Double_point>& a, std::vector<Double_point> b)
+{
+  std::sort(b.begin(), b.end());
+  const double d = diagonal(b);
+  const double slab = 1e-6 * d;
+  double worst = 0;
+  for(const Double_point& p : a) {
+    double best = 1e300;
+    for(auto it = std::lower_bound(b.begin(), b.end(), Double_point(p.x() - slab, -1e300, -1e300));
+        it != b.end() && it->x() <= p.x() + slab; ++it)
+      best = (std::min)(best, CGAL::squared_distance(*it, p));
+    worst = (std::max)(worst, std::sqrt(best));
+  }
+  return worst / d;
+}
+
+/// both ways: every vertex of each mesh has a partner in the other
+template <class MeshA, class MeshB>
+double position_mismatch(const MeshA& a, const MeshB& b)
+{
+  const auto pa = double_points(a), pb = double_points(b);
+  return (std::max)(position_mismatch(pa, pb), position_mismatch(pb, pa));
+}
+
+/// the message of the Bad_input that `call` throws, or "no exception"
+template <class Call>
+std::string bad_input_message(const Call& call)
+{
+  try {
+    call();
+  } catch(const CGAL::Subdiv::Bad_input& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+} // namespace testing_utils
+
+#endif // CGAL_SUBDIV_TEST_MESH_TEST_UTILS_H
