@@ -2,6 +2,7 @@
 #ifndef CGAL_SUBDIV_TEST_MESH_TEST_UTILS_H
 #define CGAL_SUBDIV_TEST_MESH_TEST_UTILS_H
 
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/number_utils.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,40 @@ double position_mismatch(const MeshA& a, const MeshB& b)
 {
   const auto pa = double_points(a), pb = double_points(b);
   return (std::max)(position_mismatch(pa, pb), position_mismatch(pb, pa));
+}
+
+/// reads the `v` and `f` lines of an OBJ file (OpenSubdiv's shapes carry `vt`,
+/// `vn` and `t` tag lines that CGAL's reader does not expect); false on failure
+template <class Mesh>
+bool read_obj_positions(const std::string& path, Mesh& mesh)
+{
+  using Point = typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type;
+  std::ifstream in(path);
+  if(!in)
+    return false;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  std::string line;
+  while(std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if(tag == "v") {
+      double x, y, z;
+      words >> x >> y >> z;
+      points.emplace_back(x, y, z);
+    } else if(tag == "f") {
+      std::vector<std::size_t> face;
+      std::string corner;
+      while(words >> corner)
+        face.push_back(std::stoul(corner.substr(0, corner.find('/'))) - 1);
+      faces.push_back(face);
+    }
+  }
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(faces))
+    return false;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  return true;
 }
 
 /// the message of the Bad_input that `call` throws, or "no exception"

@@ -141,3 +141,41 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_NE(message(big, -1).find("negative"), std::string::npos);
   EXPECT_EQ(num_faces(big), 5558u);
 }
+
+// OpenSubdiv's Hbr reference results: <shape>_levelN.obj holds N+1 uniform steps
+// of opensubdiv/<shape>.obj, written from single-precision floats.
+TEST(Loop, matches_opensubdiv_reference_results)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  struct Case { std::string shape; S::Border_corners corners; };
+  // loop_cube and loop_icosahedron are closed; the two *_edgecorner shapes use
+  // OpenSubdiv's "edges and corners" boundary rule: Border_corners::sharp
+  for(const Case& c : {Case{"loop_cube", S::Border_corners::smooth}, Case{"loop_icosahedron", S::Border_corners::smooth},
+                       Case{"loop_saddle_edgecorner", S::Border_corners::sharp},
+                       Case{"loop_triangle_edgecorner", S::Border_corners::sharp}}) {
+    Mesh mesh;
+    ASSERT_TRUE(testing_utils::read_obj_positions(shared_mesh("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
+    for(int level = 0; level <= 2; ++level) {
+      S::subdivide(mesh, S::Loop_mask<Mesh>(c.corners));
+      Mesh reference;
+      ASSERT_TRUE(testing_utils::read_obj_positions(
+        shared_mesh("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
+      ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
+      ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
+      EXPECT_LT(position_mismatch(mesh, reference), 1e-6) << c.shape << " level " << level;
+    }
+  }
+}
+
+// The deliberate difference: by default a border corner follows the smooth
+// border rule (as in CGAL), which OpenSubdiv's "edges and corners" mode does not.
+TEST(Loop, default_border_corners_differ_from_opensubdiv_edge_and_corner_mode)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh smooth, reference;
+  ASSERT_TRUE(testing_utils::read_obj_positions(shared_mesh("opensubdiv/loop_triangle_edgecorner.obj"), smooth));
+  ASSERT_TRUE(testing_utils::read_obj_positions(
+    shared_mesh("opensubdiv_hbr_baseline/loop_triangle_edgecorner_level0.obj"), reference));
+  S::loop_subdivision(smooth);
+  EXPECT_GT(position_mismatch(smooth, reference), 1e-3);
+}

@@ -5,6 +5,7 @@
 
 #include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/boundary_rules.h>
 #include <CGAL/Subdiv/masks/loop_weights.h>
 
 #include <string>
@@ -21,7 +22,8 @@ namespace Subdiv {
  *   with \f$\beta_n\f$ from `Beta` (`Loop_beta` by default, `Warren_beta`);
  * - border edge: its midpoint; border vertex: 1/8, 6/8, 1/8 with its two
  *   border neighbours (the cubic B-spline rules, so the border is a cubic
- *   B-spline curve of the border polygon).
+ *   B-spline curve of the border polygon); a border vertex with a single
+ *   face keeps that rule or, with `Border_corners::sharp`, stays in place.
  *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
@@ -37,7 +39,10 @@ public:
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
+  explicit Loop_mask(Border_corners corners = Border_corners::smooth) : m_corners(corners) {}
+
   std::string name() const { return "Loop (" + Beta::name() + " beta)"; }
+  Border_corners border_corners() const { return m_corners; }
   bool is_interpolating() const { return false; }
 
   template <class Accumulator>
@@ -50,6 +55,11 @@ public:
       ++n;
       if(CGAL::is_border(h, mesh))
         border_in = h;
+    }
+    if(border_in != boost::graph_traits<Mesh>::null_halfedge() && n == 2 &&
+       m_corners == Border_corners::sharp) { // corner
+      acc.add(v, FT(1));
+      return;
     }
     if(border_in != boost::graph_traits<Mesh>::null_halfedge()) { // border vertex
       acc.add(v, FT(6) / FT(8));
@@ -76,6 +86,9 @@ public:
     acc.add(target(next(h, mesh), mesh), FT(1) / FT(8));
     acc.add(target(next(opposite(h, mesh), mesh), mesh), FT(1) / FT(8));
   }
+
+private:
+  Border_corners m_corners;
 };
 
 } // namespace Subdiv
