@@ -7,7 +7,10 @@
 /// One-line wrappers of `subdivide()`, one per scheme, with the names users
 /// of CGAL expect.
 
+#include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
 
 namespace CGAL {
@@ -25,6 +28,27 @@ template <class PolygonMesh, class NamedParameters = parameters::Default_named_p
 void loop_warren_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
   subdivide(mesh, Loop_mask<PolygonMesh, internal::Mesh_FT<PolygonMesh>, Warren_beta>(), np);
+}
+
+/// Butterfly subdivision (Dyn, Levin, Gregory 1990, tension 1/16). \sa `subdivide()`, `Butterfly_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void butterfly_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Butterfly_mask<PolygonMesh>(), np);
+}
+
+/// Modified butterfly subdivision (Zorin, Schroeder, Sweldens 1996). \sa `subdivide()`, `Modified_butterfly_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void modified_butterfly_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Modified_butterfly_mask<PolygonMesh>(), np);
+}
+
+/// Linear 1-to-4 split of a triangle mesh (edge midpoints). \sa `subdivide()`, `Linear_triangle_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void linear_triangle_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Linear_triangle_mask<PolygonMesh>(), np);
 }
 
 } // namespace Subdiv

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_BUTTERFLY_MASK_H
+#define CGAL_SUBDIV_MASKS_BUTTERFLY_MASK_H
+
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/butterfly_weights.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The butterfly scheme of Dyn, Levin and Gregory [1990] on triangle meshes;
+ * split: 1-to-4 triangle split. Interpolating: old vertices keep their
+ * positions.
+ *
+ * - interior edge (a, b) with wings c, d (the third vertices of its two
+ *   faces) and outer vertices e1..e4 (the third vertices of the faces across
+ *   the four other edges of those two faces, see `butterfly_weights.h`):
+ *   \f$ \frac12 (a + b) + 2w (c + d) - w (e_1 + e_2 + e_3 + e_4) \f$;
+ *   w = 1/16 gives 1/2, 1/2, 1/8, 1/8, -1/16 x 4 and reproduces cubic
+ *   polynomials on a regular (valence 6) mesh. The same eight-point stencil
+ *   is used at every valence: that is the 1990 scheme (the modified butterfly,
+ *   `Modified_butterfly_mask`, is the variant with rules for valence != 6).
+ * - old vertex: itself, weight 1.
+ *
+ * Border rules. The 1990 paper states no rule for a mesh with a border; this
+ * mask chooses:
+ * - border edge: the four-point rule with the same tension,
+ *   -w, 1/2 + w, 1/2 + w, -w over the border polygon (-1/16, 9/16, 9/16,
+ *   -1/16 at w = 1/16). A border edge point depends on border vertices only,
+ *   so every border loop of the refined mesh is exactly one step of the
+ *   four-point curve scheme (`Four_point_scheme`) applied to the old loop;
+ * - interior edge whose stencil reaches over the border (an outer vertex
+ *   e_i is missing because the edge across which it lies is a border edge):
+ *   the missing vertex is replaced by the reflection of the face's third
+ *   vertex through that border edge's midpoint, e.g. e1 := b + c - a, the
+ *   vertex a regular grid would have there. The weights still sum to 1, so
+ *   the rule is affine invariant and reproduces planes; it does not
+ *   reproduce cubics.
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Butterfly_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Triangle_quadrisection<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  /// \throws Bad_input unless 0 <= w < 1/4: the range in which the four-point
+  /// rule of the border converges. w = 0 is piecewise-linear interpolation
+  /// (edge midpoints); w = 1/16 is the value of the paper.
+  explicit Butterfly_mask(const FT& w = FT(1) / FT(16)) : m_w(w), m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w)
+  {
+    internal::require(FT(0) <= w && w < FT(1) / FT(4), "butterfly tension w must satisfy 0 <= w < 1/4");
+  }
+
+  std::string name() const { return "butterfly"; }
+  bool is_interpolating() const { return true; }
+  const FT& w() const { return m_w; }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  {
+    acc.add(v, FT(1));
+  }
+
+  template <class Accumulator>
+  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    if(CGAL::is_border_edge(h, mesh)) { // border edge: four-point rule
+      internal::four_point_border_stencil(mesh, h, m_w, acc);
+      return;
+    }
+    // interior edge: eight-point stencil, missing outer vertices reflected
+    internal::butterfly_stencil(mesh, h, m_half, m_wing, m_outer, acc);
+  }
+
+private:
+  FT m_w;
+  FT m_half;
+  FT m_wing;
+  FT m_outer;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_BUTTERFLY_MASK_H

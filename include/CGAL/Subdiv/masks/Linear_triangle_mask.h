@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_LINEAR_TRIANGLE_MASK_H
+#define CGAL_SUBDIV_MASKS_LINEAR_TRIANGLE_MASK_H
+
+#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * Linear subdivision of a triangle mesh: the 1-to-4 triangle split with no
+ * smoothing. Old vertices keep their positions and every edge gets its
+ * midpoint, so the refined mesh lies exactly on the old one (the same
+ * surface, with four times as many triangles). Border edges are no different.
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Linear_triangle_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Triangle_quadrisection<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Linear_triangle_mask() : m_half(FT(1) / FT(2)) {}
+
+  std::string name() const { return "linear triangle"; }
+  bool is_interpolating() const { return true; }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  {
+    acc.add(v, FT(1));
+  }
+
+  template <class Accumulator>
+  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    acc.add(source(h, mesh), m_half);
+    acc.add(target(h, mesh), m_half);
+  }
+
+private:
+  FT m_half;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_LINEAR_TRIANGLE_MASK_H

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_MODIFIED_BUTTERFLY_MASK_H
+#define CGAL_SUBDIV_MASKS_MODIFIED_BUTTERFLY_MASK_H
+
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/butterfly_weights.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The modified butterfly scheme of Zorin, Schroeder and Sweldens [1996] on
+ * triangle meshes; split: 1-to-4 triangle split. Interpolating: old vertices
+ * keep their positions. Names of the stencil vertices as in
+ * `butterfly_weights.h` (ends a, b; wings c, d; outer e1..e4).
+ *
+ * Interior edge (a, b), both ends interior vertices:
+ * - both of valence 6: the ten-point stencil of the paper,
+ *   1/2 - w for a, b; 1/8 + 2w for c, d; -1/16 - w for e1..e4; w for the two
+ *   far vertices (the neighbour of a opposite b in a's ring, and the
+ *   neighbour of b opposite a). w = 0, the default, is the eight-point
+ *   butterfly 1/2, 1/8, -1/16, i.e. `Butterfly_mask` with tension 1/16;
+ * - one end of valence k != 6: the stencil around that end only,
+ *   `Modified_butterfly_weights` (k = 3: 5/12, -1/12, -1/12; k = 4: 3/8, 0,
+ *   -1/8, 0; k >= 5: cosine formula; 3/4 for the end itself);
+ * - both ends of valence != 6: the average of the two stencils.
+ *
+ * Border rules. The paper's rules are for interior edges between interior
+ * vertices; Zorin's thesis adds special boundary stencils, which this mask
+ * does not reproduce. It chooses, and documents:
+ * - border edge: the four-point rule -1/16, 9/16, 9/16, -1/16 over the
+ *   border polygon, so a border loop refines as the four-point curve scheme;
+ * - interior edge with one end on the border: the stencil around the other
+ *   (interior) end, whatever its valence (at valence 6 that is 7/24, 1/12,
+ *   -1/12, -1/24, -1/12, 1/12 and 3/4). It needs only that end's ring, which is
+ *   complete, and it interpolates, sums to 1 and reproduces planes;
+ * - interior edge with both ends on the border: the eight-point butterfly
+ *   1/2, 1/8, -1/16, a missing outer vertex replaced by the reflection of its
+ *   face's third vertex through the border edge, as in `Butterfly_mask`.
+ *   An interior vertex of valence < 3 (a degenerate mesh) is treated the same.
+ *
+ * Exactness: the weights are rational, and so exact in an exact kernel, at
+ * valences 3, 4 and 6; other valences use the nearest double of each cosine
+ * (see `Modified_butterfly_weights`), with the end's own weight taken as
+ * 1 - sum of the ring weights, so that every stencil sums to exactly 1.
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Modified_butterfly_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Triangle_quadrisection<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using Weights = Modified_butterfly_weights<FT>;
+
+  /// \param w the parameter of the regular ten-point stencil.
+  /// \throws Bad_input unless -1/16 <= w <= 1/16, the range this library
+  /// accepts (in it the wing weight 1/8 + 2w is >= 0 and the outer weight
+  /// -1/16 - w is <= 0, as in the butterfly); it is not a smoothness bound.
+  explicit Modified_butterfly_mask(const FT& w = FT(0))
+    : m_w(w), m_half(FT(1) / FT(2)), m_end(FT(1) / FT(2) - w), m_wing(FT(1) / FT(8) + FT(2) * w),
+      m_outer(FT(-1) / FT(16) - w), m_plain_wing(FT(1) / FT(8)), m_plain_outer(FT(-1) / FT(16)),
+      m_border_w(FT(1) / FT(16))
+  {
+    internal::require(FT(-1) / FT(16) <= w && w <= FT(1) / FT(16),
+                      "modified butterfly parameter w must satisfy -1/16 <= w <= 1/16");
+    for(int k = 0; k <= max_cached_valence; ++k) {
+      m_cache.emplace_back(k >= 3 ? k : 0);
+      m_half_cache.push_back(halved(m_cache.back()));
+    }
+  }
+
+  std::string name() const { return "modified butterfly"; }
+  bool is_interpolating() const { return true; }
+  const FT& w() const { return m_w; }
+
+  /// the weights around an end of valence k (k >= 3)
+  static Weights weights(int k) { return Weights(k); }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  {
+    acc.add(v, FT(1));
+  }
+
+  template <class Accumulator>
+  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    if(CGAL::is_border_edge(h, mesh)) { // border edge: four-point rule
+      internal::four_point_border_stencil(mesh, h, m_border_w, acc);
+      return;
+    }
+    const halfedge_descriptor g = opposite(h, mesh);
+    const End a = end_of(mesh, h), b = end_of(mesh, g);
+    const bool a_usable = a.interior && a.valence >= 3, b_usable = b.interior && b.valence >= 3;
+    if(a_usable && b_usable) {
+      if(a.valence == 6 && b.valence == 6) { // regular: ten-point stencil
+        internal::butterfly_stencil(mesh, h, m_end, m_wing, m_outer, acc);
+        if(m_w != FT(0)) {
+          acc.add(target(rotate(mesh, h, 3), mesh), m_w);
+          acc.add(target(rotate(mesh, g, 3), mesh), m_w);
+        }
+      } else if(a.valence != 6 && b.valence != 6) { // two extraordinary ends: average
+        ring_stencil(mesh, h, a.valence, true, acc);
+        ring_stencil(mesh, g, b.valence, true, acc);
+      } else if(a.valence != 6) { // one extraordinary end
+        ring_stencil(mesh, h, a.valence, false, acc);
+      } else {
+        ring_stencil(mesh, g, b.valence, false, acc);
+      }
+    } else if(a_usable) { // b on the border: the stencil around a
+      ring_stencil(mesh, h, a.valence, false, acc);
+    } else if(b_usable) {
+      ring_stencil(mesh, g, b.valence, false, acc);
+    } else { // both ends on the border: eight-point butterfly, reflected
+      internal::butterfly_stencil(mesh, h, m_half, m_plain_wing, m_plain_outer, acc);
+    }
+  }
+
+private:
+  static constexpr int max_cached_valence = 32;
+
+  struct End
+  {
+    int valence;
+    bool interior;
+  };
+
+  // the next halfedge leaving source(x), `steps` times
+  static halfedge_descriptor rotate(const Mesh& mesh, halfedge_descriptor x, int steps)
+  {
+    for(int i = 0; i < steps; ++i)
+      x = opposite(prev(x, mesh), mesh);
+    return x;
+  }
+
+  static End end_of(const Mesh& mesh, halfedge_descriptor h)
+  {
+    End end{0, true};
+    halfedge_descriptor x = h;
+    do {
+      ++end.valence;
+      if(CGAL::is_border(x, mesh))
+        end.interior = false;
+      x = opposite(prev(x, mesh), mesh);
+    } while(x != h);
+    return end;
+  }
+
+  static Weights halved(const Weights& weights)
+  {
+    Weights half(0);
+    half.centre = weights.centre / FT(2);
+    for(const FT& s : weights.ring)
+      half.ring.push_back(s / FT(2));
+    return half;
+  }
+
+  // the stencil around v = source(h), of valence k, from e_0 = target(h);
+  // halved when it is one of two averaged stencils
+  template <class Accumulator>
+  void ring_stencil(const Mesh& mesh, halfedge_descriptor h, int k, bool half, Accumulator& acc) const
+  {
+    if(k <= max_cached_valence)
+      return add_ring(mesh, h, half ? m_half_cache[k] : m_cache[k], acc);
+    const Weights weights(k);
+    add_ring(mesh, h, half ? halved(weights) : weights, acc);
+  }
+
+  template <class Accumulator>
+  static void add_ring(const Mesh& mesh, halfedge_descriptor h, const Weights& weights, Accumulator& acc)
+  {
+    acc.add(source(h, mesh), weights.centre);
+    halfedge_descriptor x = h;
+    for(const FT& s : weights.ring) {
+      if(s != FT(0))
+        acc.add(target(x, mesh), s);
+      x = opposite(prev(x, mesh), mesh);
+    }
+  }
+
+  FT m_w;
+  FT m_half;
+  FT m_end;
+  FT m_wing;
+  FT m_outer;
+  FT m_plain_wing;
+  FT m_plain_outer;
+  FT m_border_w;
+  std::vector<Weights> m_cache;      // by valence, 0..max_cached_valence
+  std::vector<Weights> m_half_cache; // the same, halved
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_MODIFIED_BUTTERFLY_MASK_H

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
+#define CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
+
+#include <CGAL/Subdiv/masks/loop_weights.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * Stencil pieces shared by the butterfly and the modified butterfly masks.
+ * Names for an interior edge, seen from halfedge h = (a -> b) in face
+ * (a, b, c), its opposite in face (b, a, d):
+ *
+ *        e2 ------ c ------ e1
+ *          \     /   \     /
+ *           \   /     \   /
+ *             a ------- b
+ *           /   \     /   \
+ *          /     \   /     \
+ *        e3 ------ d ------ e4
+ *
+ * a, b are the ends, c, d the wings, e1..e4 the outer vertices: e1 lies
+ * across edge (b, c) from a, e2 across (c, a) from b, e3 across (a, d) from
+ * b, e4 across (d, b) from a.
+ */
+
+// The outer vertex across the edge of halfedge x from the face of x, with
+// `weight`. Where that face is missing (x's edge is on the border) the
+// outer vertex is replaced by the reflection of the face's third vertex r
+// through the midpoint of x's edge, source(x) + target(x) - r: the vertex
+// a regular triangle grid would have there. The weights still sum to `weight`,
+// so the stencil stays affine invariant.
+template <class Mesh, class FT, class Accumulator>
+void add_outer_vertex(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor x, const FT& weight,
+                      Accumulator& acc)
+{
+  const auto across = opposite(x, mesh);
+  if(!CGAL::is_border(across, mesh)) {
+    acc.add(target(next(across, mesh), mesh), weight);
+    return;
+  }
+  const FT minus_weight = -weight;
+  acc.add(source(x, mesh), weight);
+  acc.add(target(x, mesh), weight);
+  acc.add(target(next(x, mesh), mesh), minus_weight);
+}
+
+// The butterfly stencil of the interior edge of h: `end` for a and b,
+// `wing` for c and d, `outer` for e1..e4 (missing ones reflected).
+template <class Mesh, class FT, class Accumulator>
+void butterfly_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h, const FT& end,
+                       const FT& wing, const FT& outer, Accumulator& acc)
+{
+  for(const auto g : {h, opposite(h, mesh)}) {
+    acc.add(target(g, mesh), end);
+    acc.add(target(next(g, mesh), mesh), wing);
+    add_outer_vertex(mesh, next(g, mesh), outer, acc);
+    add_outer_vertex(mesh, prev(g, mesh), outer, acc);
+  }
+}
+
+// The four-point rule with tension w along the border edge of h:
+// -w, 1/2 + w, 1/2 + w, -w over the border polygon.
+template <class Mesh, class FT, class Accumulator>
+void four_point_border_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h,
+                               const FT& w, Accumulator& acc)
+{
+  const auto border = CGAL::is_border(h, mesh) ? h : opposite(h, mesh);
+  const FT inner = FT(1) / FT(2) + w;
+  const FT outer = -w;
+  acc.add(source(prev(border, mesh), mesh), outer);
+  acc.add(source(border, mesh), inner);
+  acc.add(target(border, mesh), inner);
+  acc.add(target(next(border, mesh), mesh), outer);
+}
+
+// cos(2 pi m / n), n > 0. With d = n / gcd(m, n), the value is rational
+// exactly when d is 1, 2, 3, 4 or 6 (then m / gcd is +-1 modulo d and the
+// value is cos(2 pi / d)); otherwise it is the double nearest to it, computed
+// in long double. m is first reduced to 0 <= m <= n / 2, so that
+// cos(2 pi m / n) and cos(2 pi (n - m) / n) are the same number.
+template <class FT>
+FT cos_two_pi_fraction(int m, int n, bool* exact = nullptr)
+{
+  m %= n;
+  if(m < 0)
+    m += n;
+  if(2 * m > n)
+    m = n - m;
+  const int d = n / std::gcd(m, n); // gcd(0, n) = n
+  const bool rational = d == 1 || d == 2 || d == 3 || d == 4 || d == 6;
+  if(exact)
+    *exact = rational;
+  if(rational)
+    return cos_two_pi_over<FT>(d);
+  const long double pi = 3.141592653589793238462643383279502884L;
+  return FT(static_cast<double>(std::cos(2 * pi * static_cast<long double>(m) / static_cast<long double>(n))));
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The weights of the modified butterfly rule [Zorin, Schroeder, Sweldens
+ * 1996] for an edge from a vertex v of valence k, k >= 3, whose neighbours
+ * e_0, ..., e_{k-1} are numbered around v from the edge's other end e_0:
+ *
+ * - k = 3: s_0 = 5/12, s_1 = s_2 = -1/12;
+ * - k = 4: s_0 = 3/8, s_1 = 0, s_2 = -1/8, s_3 = 0;
+ * - k >= 5: \f$ s_j = \frac1k \left( \frac14 + \cos\frac{2\pi j}{k} + \frac12 \cos\frac{4\pi j}{k} \right) \f$;
+ * - v itself: `centre` = 1 - sum_j s_j, which is 3/4.
+ *
+ * Exact (rational) at k = 3, 4 and 6; at other valences some cosines are
+ * irrational and the double nearest to each is used. The centre weight is
+ * computed as 1 - sum_j s_j rather than written as 3/4, so that the weights
+ * sum to exactly 1 in every number type: an exact kernel then keeps the
+ * scheme's affine invariance exactly, and the centre weight differs from 3/4
+ * by the rounding of the cosines only.
+ */
+template <class FT>
+struct Modified_butterfly_weights
+{
+  FT centre;
+  std::vector<FT> ring; ///< s_0, ..., s_{k-1}
+
+  /// \pre k >= 3
+  explicit Modified_butterfly_weights(int k) : centre(0), ring(k > 0 ? k : 0, FT(0))
+  {
+    if(k == 3) {
+      ring[0] = FT(5) / FT(12);
+      ring[1] = ring[2] = FT(-1) / FT(12);
+    } else if(k == 4) {
+      ring[0] = FT(3) / FT(8);
+      ring[2] = FT(-1) / FT(8);
+    } else {
+      for(int j = 0; j < k; ++j) {
+        const FT sum = FT(1) / FT(4) + internal::cos_two_pi_fraction<FT>(j, k) +
+                       internal::cos_two_pi_fraction<FT>(2 * j, k) / FT(2);
+        ring[j] = sum / FT(k);
+      }
+    }
+    FT ring_sum(0);
+    for(const FT& s : ring)
+      ring_sum += s;
+    centre = FT(1) - ring_sum;
+  }
+
+  /// whether every weight at valence k is the exact (rational) value
+  static bool is_exact(int k)
+  {
+    if(k == 3 || k == 4)
+      return true;
+    for(int j = 0; j < k; ++j) {
+      bool first = false, second = false;
+      internal::cos_two_pi_fraction<double>(j, k, &first);
+      internal::cos_two_pi_fraction<double>(2 * j, k, &second);
+      if(!first || !second)
+        return false;
+    }
+    return true;
+  }
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
