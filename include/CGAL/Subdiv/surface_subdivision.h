@@ -8,6 +8,9 @@
 /// of CGAL expect.
 
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
+#include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
@@ -49,6 +52,27 @@ template <class PolygonMesh, class NamedParameters = parameters::Default_named_p
 void linear_triangle_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
   subdivide(mesh, Linear_triangle_mask<PolygonMesh>(), np);
+}
+
+/// Catmull-Clark subdivision of any polygon mesh. \sa `subdivide()`, `Catmull_clark_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void catmull_clark_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Catmull_clark_mask<PolygonMesh>(), np);
+}
+
+/// Doo-Sabin subdivision of any polygon mesh. \sa `subdivide()`, `Doo_sabin_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void doo_sabin_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Doo_sabin_mask<PolygonMesh>(), np);
+}
+
+/// Linear quad split of any polygon mesh (edge midpoints, face centroids). \sa `subdivide()`, `Linear_quad_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void linear_quad_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Linear_quad_mask<PolygonMesh>(), np);
 }
 
 } // namespace Subdiv

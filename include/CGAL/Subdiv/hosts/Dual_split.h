@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
+#define CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
+
+#include <CGAL/Subdiv/hosts/Vertex_origin.h>
+#include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivHosts
+ * The dual quad split (DQQ) of Doo-Sabin subdivision, on any polygon mesh:
+ * every face corner (a halfedge with a face, standing for the corner of
+ * `face(h)` at `target(h)`) becomes a new vertex, and the new faces are
+ * - one n-gon per old n-gon, through its corners (the "face face");
+ * - one quad per interior edge, through the four corners at its two ends;
+ * - one n-gon per interior vertex of valence n, through its corners;
+ * - one k-gon per border vertex with k >= 3 faces, through its corners.
+ *
+ * Border: a border edge gets no face (the face face beside it already has an
+ * edge along it), and a border vertex with k faces, which has k - 1 interior
+ * edges, gets a face only when k >= 3: its k corners are then joined by the
+ * k-gon, whose closing edge lies on the new border. So the new border
+ * polygon runs, for every border edge (a, b), from the corner at a to the
+ * corner at b of the face beside it, and straight on to the next border
+ * edge's face; with the border corner rule of `Doo_sabin_mask` it is Chaikin's
+ * refinement of the old border polygon. (CGAL's `DooSabin_subdivision` makes
+ * no face at border vertices, so its border is a zigzag through all k corners
+ * of every border vertex; its interior faces are the same as here.)
+ *
+ * Numbering of the new vertices: one per face corner, in face order, around
+ * each face starting at the corner of `halfedge(f)`. Numbering of the new
+ * faces: the face faces in face order, then the edge quads in edge order,
+ * then the vertex faces in vertex order. Each face's parent is the old face
+ * of its first corner.
+ *
+ * Counts: V' = C (the number of corners), E' = C + 2I + K, F' = F + I + V_i + K,
+ * with I interior edges, V_i interior vertices and K border vertices with at
+ * least 3 faces; the Euler characteristic is kept.
+ *
+ * Mask used: `corner_node(mesh, h, acc)`.
+ */
+template <class Mesh>
+class Dual_split
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  static constexpr int required_face_size = 0;
+  /// F' = F + E + V: four times F on a quad mesh, which every mesh becomes
+  /// after one level, up to its extraordinary faces
+  static double face_growth() { return 4; }
+
+  explicit Dual_split(const Mesh& mesh)
+    : m_mesh(mesh),
+      m_number(mesh),
+      m_corner(2 * num_edges(mesh), none),
+      m_interior(num_edges(mesh), none),
+      m_corner_count(0),
+      m_interior_count(0),
+      m_interior_vertex_count(0),
+      m_border_face_count(0)
+  {
+    for(face_descriptor f : CGAL::faces(mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        m_corner[m_number(h)] = static_cast<Index>(m_corner_count++);
+    for(auto e : edges(mesh))
+      if(!CGAL::is_border(e, mesh))
+        m_interior[m_number(e)] = static_cast<Index>(m_interior_count++);
+    for(vertex_descriptor v : vertices(mesh)) {
+      const int k = faces_at_border_vertex(v);
+      if(k < 0)
+        ++m_interior_vertex_count;
+      else if(k >= 3)
+        ++m_border_face_count;
+    }
+  }
+
+  std::size_t number_of_new_vertices() const { return m_corner_count; }
+  std::size_t number_of_new_faces() const
+  {
+    return num_faces(m_mesh) + m_interior_count + m_interior_vertex_count + m_border_face_count;
+  }
+
+  Vertex_origin origin(std::size_t j) const { return {Origin_kind::corner, j}; }
+
+  /// calls visit(new index, report) for every new vertex; report(acc) makes the
+  /// mask report that vertex's weights to `acc`
+  template <class Mask, class Visitor>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  {
+    std::size_t c = 0;
+    for(face_descriptor f : CGAL::faces(m_mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
+        visit(c++, [&](auto& acc) { mask.corner_node(m_mesh, h, acc); });
+  }
+
+  /*
+   * New edges: first one per corner, the edge of the face face along the
+   * corner's halfedge h (from the corner at source(h) to the corner at
+   * target(h)); then two per interior edge e, in the order of the interior
+   * edges, one in the vertex face at each end (2i + 0 at the target of
+   * halfedge(e), 2i + 1 at its source), running from the corner of the face
+   * of the incoming halfedge to the corner of the face on the other side;
+   * then the closing edges of the border vertex faces, in vertex order.
+   */
+  internal::Face_soup faces() const
+  {
+    const std::size_t vertex_edges = m_corner_count;
+    const std::size_t closing_edges = m_corner_count + 2 * m_interior_count;
+    internal::Face_soup soup(m_corner_count, closing_edges + m_border_face_count);
+    soup.reserve(number_of_new_faces(), 2 * m_corner_count + 4 * m_interior_count);
+
+    // face faces
+    for(face_descriptor f : CGAL::faces(m_mesh)) {
+      const std::size_t parent = m_number(f);
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
+        soup.corner(corner(h), 2 * corner(next(h, m_mesh)));
+      soup.close_face(parent);
+    }
+    // edge quads: h runs from a to b, h' = opposite(h) back
+    for(auto e : edges(m_mesh)) {
+      if(CGAL::is_border(e, m_mesh))
+        continue;
+      const halfedge_descriptor h = halfedge(e, m_mesh), o = opposite(h, m_mesh);
+      soup.corner(corner(h), 2 * corner(h) + 1);
+      soup.corner(corner(prev(h, m_mesh)), 2 * (vertex_edges + vertex_edge(o)) + 1);
+      soup.corner(corner(o), 2 * corner(o) + 1);
+      soup.corner(corner(prev(o, m_mesh)), 2 * (vertex_edges + vertex_edge(h)) + 1);
+      soup.close_face(m_number(face(h, m_mesh)));
+    }
+    // vertex faces: corners of the incoming halfedges h, h <- prev(opposite(h))
+    std::size_t closing = closing_edges;
+    for(vertex_descriptor v : vertices(m_mesh)) {
+      halfedge_descriptor first = halfedge(v, m_mesh);
+      const int k = faces_at_border_vertex(v, &first);
+      if(k >= 0 && k < 3)
+        continue;
+      halfedge_descriptor h = first;
+      for(int i = 0;; ++i) {
+        if(k >= 0 && i == k - 1) { // last corner of a border vertex face
+          soup.corner(corner(h), 2 * closing++);
+          break;
+        }
+        soup.corner(corner(h), 2 * (vertex_edges + vertex_edge(h)));
+        h = prev(opposite(h, m_mesh), m_mesh);
+        if(k < 0 && h == first)
+          break;
+      }
+      soup.close_face(m_number(face(first, m_mesh)));
+    }
+    return soup;
+  }
+
+private:
+  using Index = std::uint32_t;
+  static constexpr Index none = (std::numeric_limits<Index>::max)();
+
+  std::size_t corner(halfedge_descriptor h) const { return m_corner[m_number(h)]; }
+
+  // the vertex-face edge at target(h) across the interior edge of h
+  std::size_t vertex_edge(halfedge_descriptor h) const
+  {
+    const std::size_t id = m_number(h);
+    return 2 * static_cast<std::size_t>(m_interior[id >> 1]) + (id & 1);
+  }
+
+  // -1 for an interior vertex; for a border vertex, its number of faces, and
+  // in *first the incoming halfedge of its first face (the one after the
+  // border, in the order h <- prev(opposite(h)))
+  int faces_at_border_vertex(vertex_descriptor v, halfedge_descriptor* first = nullptr) const
+  {
+    int k = 0;
+    halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m_mesh)) {
+      if(CGAL::is_border(h, m_mesh))
+        border_in = h;
+      else
+        ++k;
+    }
+    if(border_in == boost::graph_traits<Mesh>::null_halfedge())
+      return -1;
+    if(first)
+      *first = prev(opposite(border_in, m_mesh), m_mesh);
+    return k;
+  }
+
+  const Mesh& m_mesh;
+  internal::Mesh_numbering<Mesh> m_number;
+  std::vector<Index> m_corner;   // by halfedge number: corner ordinal, or none on the border
+  std::vector<Index> m_interior; // by edge number: ordinal among interior edges, or none
+  std::size_t m_corner_count;
+  std::size_t m_interior_count;
+  std::size_t m_interior_vertex_count;
+  std::size_t m_border_face_count;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_CATMULL_CLARK_MASK_H
+#define CGAL_SUBDIV_MASKS_CATMULL_CLARK_MASK_H
+
+#include <CGAL/Subdiv/hosts/Quad_split.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/boundary_rules.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * Catmull-Clark subdivision [Catmull and Clark 1978] on any polygon mesh;
+ * split: the quad split (`Quad_split`), so one level makes an all-quad mesh.
+ *
+ * - face point: the average of the face's vertices;
+ * - interior edge: \f$ \frac14 (v_0 + v_1 + f_0 + f_1) \f$, the average of its
+ *   two ends and the face points of its two faces;
+ * - interior vertex of valence n: \f$ \frac1n (F + 2R + (n-3) v) \f$, where F
+ *   is the average of the face points of its n faces and R the average of
+ *   the midpoints of its n edges;
+ * - border edge: its midpoint; border vertex: 1/8, 6/8, 1/8 with its two
+ *   border neighbours (the cubic B-spline rules: the border converges to the
+ *   cubic B-spline curve of the border polygon).
+ *
+ * The border rules are those of CGAL's `CatmullClark_mask_3` and of
+ * OpenSubdiv with `VTX_BOUNDARY_EDGE_ONLY` (RenderMan "interpolateboundary
+ * 2"), at every border vertex, including a corner of valence 2 (a vertex with
+ * a single face): it gets 1/8, 6/8, 1/8 too, and so is not interpolated
+ * (`Border_corners::smooth`, the default). With `Border_corners::sharp` such
+ * a corner stays where it is (weight 1 on itself), as with OpenSubdiv's
+ * `VTX_BOUNDARY_EDGE_AND_CORNER` (RenderMan "interpolateboundary 1");
+ * everything else is the same (the tests check both against OpenSubdiv's
+ * reference results).
+ *
+ * The mask reports weights over old vertices only: a face point's weights are
+ * expanded into its vertices (1/|f| each), and the edge and vertex rules add
+ * the face points of their faces scaled by their own factor. All weights are
+ * rational, so an exact kernel refines exactly; on a regular quad grid the
+ * rules are those of the bicubic uniform B-spline.
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Catmull_clark_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Quad_split<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth) : m_corners(corners) {}
+
+  std::string name() const { return "Catmull-Clark"; }
+  Border_corners border_corners() const { return m_corners; }
+  bool is_interpolating() const { return false; }
+
+  template <class Accumulator>
+  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  {
+    add_face_point(mesh, halfedge(f, mesh), FT(1), acc);
+  }
+
+  template <class Accumulator>
+  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    if(CGAL::is_border_edge(h, mesh)) { // border edge: midpoint
+      acc.add(source(h, mesh), FT(1) / FT(2));
+      acc.add(target(h, mesh), FT(1) / FT(2));
+      return;
+    }
+    const FT quarter = FT(1) / FT(4);
+    acc.add(source(h, mesh), quarter);
+    acc.add(target(h, mesh), quarter);
+    add_face_point(mesh, h, quarter, acc);
+    add_face_point(mesh, opposite(h, mesh), quarter, acc);
+  }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  {
+    // one walk around v gives its valence and, on the border, its border halfedge
+    int n = 0;
+    halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+      ++n;
+      if(CGAL::is_border(h, mesh))
+        border_in = h;
+    }
+    if(border_in != boost::graph_traits<Mesh>::null_halfedge() && n == 2 &&
+       m_corners == Border_corners::sharp) { // corner
+      acc.add(v, FT(1));
+      return;
+    }
+    if(border_in != boost::graph_traits<Mesh>::null_halfedge()) { // border vertex
+      acc.add(v, FT(6) / FT(8));
+      acc.add(source(border_in, mesh), FT(1) / FT(8));
+      acc.add(target(next(border_in, mesh), mesh), FT(1) / FT(8));
+      return;
+    }
+    // (F + 2R + (n-3) v) / n with F = (1/n) sum of face points and
+    // 2R = (1/n) sum (v + u) over the neighbours u
+    // v gets (n-3)/n from itself and n * 1/n^2 from its edge midpoints
+    const FT per_face = FT(1) / FT(n * n);
+    acc.add(v, FT(n - 2) / FT(n));
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+      acc.add(source(h, mesh), per_face);
+      add_face_point(mesh, h, per_face, acc);
+    }
+  }
+
+private:
+  // adds s times the face point of face(h): s/|f| for each vertex of the face
+  template <class Accumulator>
+  static void add_face_point(const Mesh& mesh, halfedge_descriptor h, const FT& s, Accumulator& acc)
+  {
+    int size = 0;
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, mesh)) {
+      (void)g;
+      ++size;
+    }
+    const FT weight = s / FT(size);
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, mesh))
+      acc.add(target(g, mesh), weight);
+  }
+
+  Border_corners m_corners;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_CATMULL_CLARK_MASK_H
