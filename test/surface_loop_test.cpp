@@ -179,3 +179,119 @@ TEST(Loop, default_border_corners_differ_from_opensubdiv_edge_and_corner_mode)
   S::loop_subdivision(smooth);
   EXPECT_GT(position_mismatch(smooth, reference), 1e-3);
 }
+
+namespace {
+
+using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using Exact_mesh = CGAL::Surface_mesh<KE::Point_3>;
+using EFT = KE::FT;
+
+// a closed bipyramid: two apexes of valence n over a ring of n vertices of valence 4
+Exact_mesh bipyramid(int n)
+{
+  Exact_mesh mesh;
+  const auto top = mesh.add_vertex(KE::Point_3(0, 0, 2)), bottom = mesh.add_vertex(KE::Point_3(1, 0, -3));
+  std::vector<Exact_mesh::Vertex_index> ring;
+  for(int i = 0; i < n; ++i) // rational points near a circle
+    ring.push_back(mesh.add_vertex(KE::Point_3(EFT(10 * (i % 3) + i), EFT(i * i % 7) - EFT(3), EFT(i % 2))));
+  for(int i = 0; i < n; ++i) {
+    mesh.add_face(top, ring[i], ring[(i + 1) % n]);
+    mesh.add_face(bottom, ring[(i + 1) % n], ring[i]);
+  }
+  return mesh;
+}
+
+// an open fan: a centre vertex with n triangles around it, the last one missing (border)
+Exact_mesh open_fan(int n)
+{
+  Exact_mesh mesh;
+  const auto centre = mesh.add_vertex(KE::Point_3(0, 0, 0));
+  std::vector<Exact_mesh::Vertex_index> ring;
+  for(int i = 0; i <= n; ++i)
+    ring.push_back(mesh.add_vertex(KE::Point_3(EFT(i + 1), EFT(i * i - 2), EFT(i % 3))));
+  for(int i = 0; i < n; ++i)
+    mesh.add_face(centre, ring[i], ring[i + 1]);
+  return mesh;
+}
+
+template <class Mask>
+void expect_every_stencil_sums_to_one(const Exact_mesh& mesh, const Mask& mask)
+{
+  for(auto v : vertices(mesh)) {
+    S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
+    mask.vertex_node(mesh, v, stencil);
+    EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " vertex " << v;
+  }
+  for(auto e : edges(mesh)) {
+    S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
+    mask.edge_node(mesh, halfedge(e, mesh), stencil);
+    EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " edge " << e;
+  }
+}
+
+} // namespace
+
+TEST(Loop, vertex_weights_of_loop_and_warren)
+{
+  // Loop's 1987 beta, rational at valences 3, 4, 6
+  EXPECT_EQ(S::Loop_beta::beta<EFT>(3), EFT(3) / EFT(16));
+  EXPECT_EQ(S::Loop_beta::beta<EFT>(4), EFT(31) / EFT(256));
+  EXPECT_EQ(S::Loop_beta::beta<EFT>(6), EFT(1) / EFT(16));
+  EXPECT_TRUE(S::Loop_beta::is_exact(6));
+  EXPECT_FALSE(S::Loop_beta::is_exact(5));
+  EXPECT_NEAR(S::Loop_beta::beta<double>(5), (0.625 - std::pow(0.375 + 0.25 * std::cos(2 * M_PI / 5), 2)) / 5, 1e-17);
+  // Warren: 3/(8n), and 3/16 at valence 3; the lecture notes' valence-8 example 5/8 + 8 * 3/64
+  EXPECT_EQ(S::Warren_beta::beta<EFT>(3), EFT(3) / EFT(16));
+  EXPECT_EQ(S::Warren_beta::beta<EFT>(8), EFT(3) / EFT(64));
+  const Exact_mesh mesh = bipyramid(8);
+  S::Stencil<Exact_mesh::Vertex_index, EFT> apex, low_valence;
+  S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>().vertex_node(mesh, Exact_mesh::Vertex_index(0), apex);
+  EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(0)), EFT(5) / EFT(8));
+  EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(64));
+  const Exact_mesh tetra_like = bipyramid(3); // apexes of valence 3: 7/16 and 3/16
+  S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>().vertex_node(tetra_like, Exact_mesh::Vertex_index(0), low_valence);
+  EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(0)), EFT(7) / EFT(16));
+  EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(16));
+}
+
+TEST(Loop, exact_properties_at_valences_3_to_9_and_on_borders)
+{
+  for(int n = 3; n <= 9; ++n) {
+    for(const Exact_mesh& mesh : {bipyramid(n), open_fan(n)}) {
+      expect_every_stencil_sums_to_one(mesh, S::Loop_mask<Exact_mesh>());
+      expect_every_stencil_sums_to_one(mesh, S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>());
+
+      // counts: V + E vertices, 4F faces, Euler characteristic kept
+      Exact_mesh refined = mesh;
+      S::loop_warren_subdivision(refined, CGAL::parameters::number_of_iterations(2));
+      const auto euler = [](const Exact_mesh& m) {
+        return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
+      };
+      EXPECT_EQ(num_faces(refined), 16 * num_faces(mesh));
+      EXPECT_EQ(euler(refined), euler(mesh));
+      EXPECT_TRUE(refined.is_valid(false));
+
+      // affine invariance, exactly: subdivide(T(mesh)) == T(subdivide(mesh))
+      const KE::Aff_transformation_3 t(2, 1, 0, 3, 0, 1, 1, -1, 1, 0, 3, 2);
+      Exact_mesh moved = mesh;
+      for(auto v : vertices(moved))
+        moved.point(v) = t.transform(moved.point(v));
+      S::loop_subdivision(moved);
+      Exact_mesh plain = mesh;
+      S::loop_subdivision(plain);
+      for(auto v : vertices(plain))
+        EXPECT_EQ(moved.point(v), t.transform(plain.point(v))) << "valence " << n;
+    }
+  }
+}
+
+TEST(Loop, a_planar_mesh_stays_in_its_plane_exactly)
+{
+  Exact_mesh mesh = open_fan(7);
+  const KE::Plane_3 plane(KE::Point_3(0, 0, 0), KE::Vector_3(1, 2, 5));
+  for(auto v : vertices(mesh)) // project to the plane x + 2y + 5z = 0
+    mesh.point(v) = plane.projection(mesh.point(v));
+  S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  for(auto v : vertices(mesh))
+    EXPECT_TRUE(plane.has_on(mesh.point(v)));
+}
