@@ -15,6 +15,7 @@
 #include "mesh_test_utils.h"
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -294,4 +295,41 @@ TEST(Loop, a_planar_mesh_stays_in_its_plane_exactly)
   S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
   for(auto v : vertices(mesh))
     EXPECT_TRUE(plane.has_on(mesh.point(v)));
+}
+
+TEST(Loop, carries_vertex_data_with_the_same_stencils_and_face_data_to_children)
+{
+  Exact_mesh mesh = open_fan(5);
+  // a scalar that is a linear function of position, and an exact vector: both
+  // must come out as that function of the new positions
+  auto height = mesh.add_property_map<Exact_mesh::Vertex_index, EFT>("v:height", EFT(0)).first;
+  auto shifted = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Vector_3>("v:shifted", CGAL::NULL_VECTOR).first;
+  auto label = mesh.add_property_map<Exact_mesh::Face_index, int>("f:label", -1).first;
+  const auto linear = [](const KE::Point_3& p) -> EFT { return 3 * p.x() - p.y() + 7 * p.z() + 2; };
+  for(auto v : vertices(mesh)) {
+    height[v] = linear(mesh.point(v));
+    shifted[v] = mesh.point(v) - CGAL::ORIGIN + KE::Vector_3(1, 2, 3);
+  }
+  int next_label = 100;
+  for(auto f : faces(mesh))
+    label[f] = next_label++;
+
+  S::Carried_data<Exact_mesh> data;
+  data.vertex_map(height).vertex_map(shifted).face_map(label);
+  S::loop_subdivision(mesh, S::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+
+  EXPECT_EQ(num_faces(mesh), 16u * 5u);
+  for(auto v : vertices(mesh)) {
+    EXPECT_EQ(height[v], linear(mesh.point(v)));
+    EXPECT_EQ(shifted[v], mesh.point(v) - CGAL::ORIGIN + KE::Vector_3(1, 2, 3));
+  }
+  // every old face has 16 descendants, which keep its label
+  std::map<int, int> children;
+  for(auto f : faces(mesh))
+    ++children[label[f]];
+  ASSERT_EQ(children.size(), 5u);
+  for(const auto& entry : children) {
+    EXPECT_GE(entry.first, 100);
+    EXPECT_EQ(entry.second, 16);
+  }
 }

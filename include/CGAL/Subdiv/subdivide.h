@@ -4,6 +4,7 @@
 #define CGAL_SUBDIV_SUBDIVIDE_H
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
@@ -76,6 +77,36 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
   rebuild_mesh(mesh, vpm, points, soup);
 }
 
+/// one level that also carries other vertex and face data: the stencils are
+/// recorded once and applied to the points and to every vertex map
+template <class Mask, class Mesh, class VertexPointMap, class FT>
+void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const Carried_data<Mesh, FT>& data)
+{
+  using Host = typename Mask::Host;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  const Host host(mesh);
+  typename Carried_data<Mesh, FT>::Vertex_stencils stencils(host.number_of_new_vertices());
+  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) { report(stencils[j]); });
+  std::vector<Point> points;
+  points.reserve(stencils.size());
+  for(const auto& stencil : stencils) {
+    Mesh_point_sum<VertexPointMap> sum(vpm);
+    for(const auto& term : stencil.terms())
+      sum.add(term.first, term.second);
+    points.push_back(sum.point());
+  }
+  const auto vertex_writers = data.read_vertices(stencils);
+  const auto face_writers = data.read_faces(mesh);
+  const Face_soup soup = host.faces();
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> new_vertices;
+  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> new_faces;
+  rebuild_mesh(mesh, vpm, points, soup, &new_vertices, &new_faces);
+  for(const auto& write : vertex_writers)
+    write(new_vertices);
+  for(const auto& write : face_writers)
+    write(new_faces, soup);
+}
+
 } // namespace internal
 
 /*!
@@ -89,7 +120,10 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
  *   - `number_of_iterations` (default 1): how many levels;
  *   - `vertex_point_map` (default the mesh's internal point map): where the
  *     points are read and written; its value type's kernel FT must be the
- *     mask's `Number_type`.
+ *     mask's `Number_type`;
+ *   - `carried_data` (`CGAL::Subdiv::carried_data(data, np)`):
+ *     other vertex data interpolated with the same stencils, face data
+ *     inherited by child faces (see `Carried_data`).
  *
  * \throws Bad_input when the mesh does not suit the scheme (empty, isolated or
  * non-manifold vertices, non-finite coordinates, a face of the wrong size) or
@@ -108,9 +142,16 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
 
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
+  using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
+  const Data* data = choose_parameter<const Data*>(get_parameter(np, internal::carried_data_t()), nullptr);
+
   internal::make_indices_dense(mesh);
-  for(int level = 0; level < levels; ++level)
-    internal::refine_once(mesh, mask, vpm);
+  for(int level = 0; level < levels; ++level) {
+    if(data != nullptr && !data->empty())
+      internal::refine_once(mesh, mask, vpm, *data);
+    else
+      internal::refine_once(mesh, mask, vpm);
+  }
 }
 
 } // namespace Subdiv

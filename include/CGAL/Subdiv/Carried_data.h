@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_CARRIED_DATA_H
+#define CGAL_SUBDIV_CARRIED_DATA_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivFunctions
+ * Per-element data that `subdivide()` carries to the refined mesh besides the
+ * points.
+ *
+ * - `vertex_map(map)`: a vertex property map whose values form a vector space
+ *   (a scalar, a `Vector_3`, a colour or UV stored as an Eigen vector, ...):
+ *   every new vertex gets the combination of old values that the scheme's mask
+ *   gives its point, with the same weights (so data is interpolated exactly as
+ *   the geometry is). The value type needs `value * weight` and `value + value`;
+ *   the weight is the mask's `FT` when the value type is that `FT`, a `double`
+ *   otherwise.
+ * - `face_map(map)`: a face property map; every new face gets the value of the
+ *   old face it lies in (for dual schemes, the faces made from an old edge or
+ *   vertex get the value of an adjacent old face).
+ *
+ * Pass it with `CGAL::Subdiv::carried_data(data, np)` (not in a namespace
+ * `parameters`, which would hide CGAL's own from code in CGAL::Subdiv). The maps
+ * must accept the new descriptors: property maps of the mesh itself do (for
+ * `Surface_mesh`, maps made with `add_property_map`).
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Carried_data
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  using Vertex_stencils = std::vector<Stencil<vertex_descriptor, FT>>;
+  /// after the rebuild: writes the values of the new vertices
+  using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
+  /// after the rebuild: writes the values of the new faces
+  using Face_writer = std::function<void(const std::vector<face_descriptor>&, const internal::Face_soup&)>;
+
+  template <class VertexMap>
+  Carried_data& vertex_map(VertexMap map)
+  {
+    m_vertex_channels.push_back([map](const Vertex_stencils& stencils) -> Vertex_writer {
+      using Value = typename boost::property_traits<VertexMap>::value_type;
+      auto values = std::make_shared<std::vector<Value>>();
+      values->reserve(stencils.size());
+      for(const auto& stencil : stencils)
+        values->push_back(combine<Value>(map, stencil));
+      return [map, values](const std::vector<vertex_descriptor>& new_vertices) {
+        for(std::size_t j = 0; j < new_vertices.size(); ++j)
+          put(map, new_vertices[j], (*values)[j]);
+      };
+    });
+    return *this;
+  }
+
+  template <class FaceMap>
+  Carried_data& face_map(FaceMap map)
+  {
+    m_face_channels.push_back([map](const Mesh& mesh) -> Face_writer {
+      using Value = typename boost::property_traits<FaceMap>::value_type;
+      auto old_values = std::make_shared<std::vector<Value>>();
+      for(face_descriptor f : faces(mesh)) // in iteration order: the ordinals of the soup's parents
+        old_values->push_back(get(map, f));
+      return [map, old_values](const std::vector<face_descriptor>& new_faces, const internal::Face_soup& soup) {
+        for(std::size_t k = 0; k < new_faces.size(); ++k)
+          put(map, new_faces[k], (*old_values)[soup.parent(k)]);
+      };
+    });
+    return *this;
+  }
+
+  bool empty() const { return m_vertex_channels.empty() && m_face_channels.empty(); }
+
+  /// reads the old values (before the rebuild) and returns the writers
+  std::vector<Vertex_writer> read_vertices(const Vertex_stencils& stencils) const
+  {
+    std::vector<Vertex_writer> writers;
+    for(const auto& channel : m_vertex_channels)
+      writers.push_back(channel(stencils));
+    return writers;
+  }
+
+  std::vector<Face_writer> read_faces(const Mesh& mesh) const
+  {
+    std::vector<Face_writer> writers;
+    for(const auto& channel : m_face_channels)
+      writers.push_back(channel(mesh));
+    return writers;
+  }
+
+private:
+  template <class Value, class VertexMap>
+  static Value combine(const VertexMap& map, const Stencil<vertex_descriptor, FT>& stencil)
+  {
+    using Weight = std::conditional_t<std::is_same<Value, FT>::value, FT, double>;
+    Value sum = get(map, stencil.terms().front().first) * Weight(weight_as<Weight>(stencil.terms().front().second));
+    for(std::size_t k = 1; k < stencil.terms().size(); ++k)
+      sum = sum + get(map, stencil.terms()[k].first) * Weight(weight_as<Weight>(stencil.terms()[k].second));
+    return sum;
+  }
+
+  template <class Weight>
+  static Weight weight_as(const FT& w)
+  {
+    if constexpr(std::is_same<Weight, FT>::value)
+      return w;
+    else
+      return CGAL::to_double(w);
+  }
+
+  std::vector<std::function<Vertex_writer(const Vertex_stencils&)>> m_vertex_channels;
+  std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
+};
+
+namespace internal {
+/// the tag of the named parameter `carried_data` (not in a namespace called
+/// internal_np, which would hide CGAL's own from code in CGAL::Subdiv)
+struct carried_data_t
+{
+};
+} // namespace internal
+
+/// named parameter of `subdivide()` and the scheme functions: data to carry;
+/// `np` lets it join other named parameters:
+/// `carried_data(data, CGAL::parameters::number_of_iterations(2))`
+template <class Mesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<const Carried_data<Mesh, FT>*, internal::carried_data_t, NamedParameters>
+carried_data(const Carried_data<Mesh, FT>& data, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return {&data, np};
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_CARRIED_DATA_H
