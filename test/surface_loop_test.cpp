@@ -314,11 +314,20 @@ TEST(Loop, carries_vertex_data_with_the_same_stencils_and_face_data_to_children)
   for(auto f : faces(mesh))
     label[f] = next_label++;
 
+  std::vector<S::Vertex_origin> origins;
   S::Carried_data<Exact_mesh> data;
-  data.vertex_map(height).vertex_map(shifted).face_map(label);
+  data.vertex_map(height).vertex_map(shifted).face_map(label).origins(origins);
+  const std::size_t vertices_before_last_level = 7 + 11; // V + E of the fan
   S::loop_subdivision(mesh, S::carried_data(data, CGAL::parameters::number_of_iterations(2)));
 
   EXPECT_EQ(num_faces(mesh), 16u * 5u);
+  // old vertices first, then one vertex per edge
+  ASSERT_EQ(origins.size(), num_vertices(mesh));
+  EXPECT_EQ(origins[0].kind, S::Origin_kind::vertex);
+  EXPECT_EQ(origins[vertices_before_last_level - 1].kind, S::Origin_kind::vertex);
+  EXPECT_EQ(origins[vertices_before_last_level].kind, S::Origin_kind::edge);
+  EXPECT_EQ(origins[vertices_before_last_level].index, 0u);
+  EXPECT_EQ(origins.back().index, 36u); // after one level the fan has 2 * 11 + 3 * 5 = 37 edges
   for(auto v : vertices(mesh)) {
     EXPECT_EQ(height[v], linear(mesh.point(v)));
     EXPECT_EQ(shifted[v], mesh.point(v) - CGAL::ORIGIN + KE::Vector_3(1, 2, 3));

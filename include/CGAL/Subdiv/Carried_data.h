@@ -4,6 +4,7 @@
 #define CGAL_SUBDIV_CARRIED_DATA_H
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
@@ -36,6 +37,10 @@ namespace Subdiv {
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
+ *
+ * - `origins(vector)`: fills `vector` with the origin of every vertex of the
+ *   last level (the old vertex, edge, face or corner it came from, by ordinal
+ *   in the iteration order of the mesh before that level; see `Vertex_origin`).
  *
  * Pass it with `CGAL::Subdiv::carried_data(data, np)` (not in a namespace
  * `parameters`, which would hide CGAL's own from code in CGAL::Subdiv). The maps
@@ -87,7 +92,23 @@ public:
     return *this;
   }
 
-  bool empty() const { return m_vertex_channels.empty() && m_face_channels.empty(); }
+  Carried_data& origins(std::vector<Vertex_origin>& out)
+  {
+    m_origins = &out;
+    return *this;
+  }
+
+  bool empty() const { return m_vertex_channels.empty() && m_face_channels.empty() && m_origins == nullptr; }
+
+  template <class Host>
+  void record_origins(const Host& host) const
+  {
+    if(m_origins == nullptr)
+      return;
+    m_origins->clear();
+    for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
+      m_origins->push_back(host.origin(j));
+  }
 
   /// reads the old values (before the rebuild) and returns the writers
   std::vector<Vertex_writer> read_vertices(const Vertex_stencils& stencils) const
@@ -128,6 +149,7 @@ private:
 
   std::vector<std::function<Vertex_writer(const Vertex_stencils&)>> m_vertex_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
+  std::vector<Vertex_origin>* m_origins = nullptr;
 };
 
 namespace internal {

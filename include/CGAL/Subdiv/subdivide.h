@@ -95,6 +95,7 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const 
       sum.add(term.first, term.second);
     points.push_back(sum.point());
   }
+  data.record_origins(host);
   const auto vertex_writers = data.read_vertices(stencils);
   const auto face_writers = data.read_faces(mesh);
   const Face_soup soup = host.faces();
