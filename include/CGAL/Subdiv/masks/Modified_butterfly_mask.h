@@ -37,14 +37,17 @@ namespace Subdiv {
  * does not reproduce. It chooses, and documents:
  * - border edge: the four-point rule -1/16, 9/16, 9/16, -1/16 over the
  *   border polygon, so a border loop refines as the four-point curve scheme;
- * - interior edge with one end on the border: the stencil around the other
- *   (interior) end, whatever its valence (at valence 6 that is 7/24, 1/12,
- *   -1/12, -1/24, -1/12, 1/12 and 3/4). It needs only that end's ring, which is
- *   complete, and it interpolates, sums to 1 and reproduces planes;
- * - interior edge with both ends on the border: the eight-point butterfly
- *   1/2, 1/8, -1/16, a missing outer vertex replaced by the reflection of its
- *   face's third vertex through the border edge, as in `Butterfly_mask`.
- *   An interior vertex of valence < 3 (a degenerate mesh) is treated the same.
+ * - interior edge with one end on the border and the other (interior) end
+ *   of valence k != 6: the stencil around the interior end, which needs only
+ *   that end's ring (complete, since the end is interior);
+ * - any other interior edge touching the border (the interior end has valence
+ *   6, or both ends are on the border): the eight-point butterfly 1/2, 1/8,
+ *   -1/16, a missing outer vertex replaced by the reflection of its face's
+ *   third vertex through the border edge (e1 := b + c - a), as in
+ *   `Butterfly_mask`. An interior vertex of valence < 3 (a degenerate mesh)
+ *   counts as a border vertex here.
+ * These are the rules OpenMesh's `ModifiedButterFlyT` applies, so results on
+ * meshes with borders agree with it as well.
  *
  * Exactness: the weights are rational, and so exact in an exact kernel, at
  * valences 3, 4 and 6; other valences use the nearest double of each cosine
@@ -120,11 +123,11 @@ public:
       } else {
         ring_stencil(mesh, g, b.valence, false, acc);
       }
-    } else if(a_usable) { // b on the border: the stencil around a
+    } else if(a_usable && a.valence != 6) { // b on the border: the stencil around a
       ring_stencil(mesh, h, a.valence, false, acc);
-    } else if(b_usable) {
+    } else if(b_usable && b.valence != 6) {
       ring_stencil(mesh, g, b.valence, false, acc);
-    } else { // both ends on the border: eight-point butterfly, reflected
+    } else { // a regular end next to the border, or both on it: eight-point butterfly, reflected
       internal::butterfly_stencil(mesh, h, m_half, m_plain_wing, m_plain_outer, acc);
     }
   }

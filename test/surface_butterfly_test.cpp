@@ -1,0 +1,586 @@
+// Butterfly, modified butterfly and linear triangle subdivision: exact stencils,
+// regular and extraordinary weights, border rules, kernels, bad input.
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include "mesh_test_utils.h"
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace S = CGAL::Subdiv;
+
+using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using FT = KE::FT;
+using P = KE::Point_3;
+using EMesh = CGAL::Surface_mesh<P>;
+using V = EMesh::Vertex_index;
+using Recorder = S::Stencil<V, FT>;
+
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+using testing_utils::position_mismatch;
+using testing_utils::shared_mesh;
+
+namespace {
+
+// ---------------------------------------------------------------- meshes
+
+// deterministic small rationals in [-1, 1], denominators up to 16
+struct Rationals
+{
+  std::uint32_t state = 12345;
+  FT operator()()
+  {
+    state = state * 1103515245u + 12345u;
+    const int numerator = static_cast<int>((state >> 16) % 33) - 16;
+    return FT(numerator) / FT(16);
+  }
+};
+
+// two apexes of valence k over a ring of k vertices of valence 4 (closed)
+EMesh bipyramid(int k)
+{
+  Rationals r;
+  EMesh mesh;
+  const V top = mesh.add_vertex(P(r(), r(), FT(3)));
+  const V bottom = mesh.add_vertex(P(r(), r(), FT(-3)));
+  std::vector<V> ring;
+  for(int i = 0; i < k; ++i)
+    ring.push_back(mesh.add_vertex(P(FT(i) + r(), FT(i * i % 5) + r(), r())));
+  for(int i = 0; i < k; ++i) {
+    mesh.add_face(top, ring[i], ring[(i + 1) % k]);
+    mesh.add_face(bottom, ring[(i + 1) % k], ring[i]);
+  }
+  return mesh;
+}
+
+// one interior vertex of valence k (vertex 0) and a border loop of k vertices
+EMesh fan(int k, const std::function<P(int)>& ring_point, const P& centre)
+{
+  EMesh mesh;
+  const V apex = mesh.add_vertex(centre);
+  std::vector<V> ring;
+  for(int i = 0; i < k; ++i)
+    ring.push_back(mesh.add_vertex(ring_point(i)));
+  for(int i = 0; i < k; ++i)
+    mesh.add_face(apex, ring[i], ring[(i + 1) % k]);
+  return mesh;
+}
+
+EMesh fan(int k)
+{
+  Rationals r;
+  return fan(
+    k, [&](int i) { return P(FT(i) + r(), FT(i * i % 7) + r(), r()); }, P(r(), r(), r()));
+}
+
+// the lattice (i, j), 0 <= i <= n, 0 <= j <= m, cut by the diagonals
+// (i, j)-(i+1, j+1): every interior vertex has valence 6 (a regular mesh)
+struct Grid
+{
+  int n, m;
+  EMesh mesh;
+  V at(int i, int j) const { return V(static_cast<EMesh::size_type>(j * (n + 1) + i)); }
+};
+
+Grid grid(int n, int m, const std::function<P(int, int)>& point)
+{
+  Grid g{n, m, EMesh()};
+  for(int j = 0; j <= m; ++j)
+    for(int i = 0; i <= n; ++i)
+      g.mesh.add_vertex(point(i, j));
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i) {
+      g.mesh.add_face(g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1));
+      g.mesh.add_face(g.at(i, j), g.at(i + 1, j + 1), g.at(i, j + 1));
+    }
+  return g;
+}
+
+Grid random_height_grid(int n, int m)
+{
+  Rationals r;
+  return grid(n, m, [&](int i, int j) { return P(FT(i), FT(j), r()); });
+}
+
+EMesh to_exact(const Mesh& in)
+{
+  EMesh out;
+  for(auto v : vertices(in)) {
+    const K::Point_3& p = in.point(v);
+    out.add_vertex(P(p.x(), p.y(), p.z()));
+  }
+  for(auto f : faces(in)) {
+    std::vector<V> corners;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, in), in))
+      corners.push_back(V(v.idx()));
+    out.add_face(corners);
+  }
+  return out;
+}
+
+bool read_shared(const std::string& name, Mesh& mesh)
+{
+  return CGAL::IO::read_polygon_mesh(shared_mesh(name), mesh);
+}
+
+// --------------------------------------------------------------- stencils
+
+template <class Mask>
+Recorder edge_stencil(const Mask& mask, const EMesh& mesh, EMesh::Halfedge_index h)
+{
+  Recorder s;
+  mask.edge_node(mesh, h, s);
+  return s;
+}
+
+template <class Mask>
+Recorder edge_stencil(const Mask& mask, const EMesh& mesh, V a, V b)
+{
+  const auto h = mesh.halfedge(a, b);
+  EXPECT_NE(h, EMesh::null_halfedge());
+  return edge_stencil(mask, mesh, h);
+}
+
+bool same_stencil(const Recorder& x, const Recorder& y)
+{
+  for(const auto& term : x.terms())
+    if(term.second != y.weight(term.first))
+      return false;
+  for(const auto& term : y.terms())
+    if(term.second != x.weight(term.first))
+      return false;
+  return true;
+}
+
+std::string describe(const Recorder& s)
+{
+  std::ostringstream out;
+  for(const auto& term : s.terms())
+    out << " v" << term.first.idx() << ":" << term.second;
+  return out.str();
+}
+
+// every vertex and edge stencil sums to exactly 1, and an edge's stencil does
+// not depend on which of its halfedges the host passes
+template <class Mask>
+void expect_affine_stencils(const Mask& mask, const EMesh& mesh, const std::string& what)
+{
+  for(V v : vertices(mesh)) {
+    Recorder s;
+    mask.vertex_node(mesh, v, s);
+    EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", vertex " << v.idx();
+    if(mask.is_interpolating())
+      EXPECT_EQ(s.weight(v), FT(1));
+  }
+  for(auto e : edges(mesh)) {
+    const Recorder s = edge_stencil(mask, mesh, halfedge(e, mesh));
+    const Recorder t = edge_stencil(mask, mesh, opposite(halfedge(e, mesh), mesh));
+    EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", edge " << e.idx() << describe(s);
+    EXPECT_TRUE(same_stencil(s, t)) << mask.name() << ", " << what << ", edge " << e.idx();
+  }
+}
+
+// ---------------------------------------------------------------- helpers
+
+// the border loop through vertex `start`, in the direction of its border halfedge
+template <class M>
+std::vector<typename M::Point> border_loop(const M& mesh, typename M::Vertex_index start)
+{
+  typename M::Halfedge_index first = M::null_halfedge();
+  for(auto h : halfedges(mesh))
+    if(mesh.is_border(h) && mesh.source(h) == start)
+      first = h;
+  std::vector<typename M::Point> loop;
+  auto h = first;
+  do {
+    loop.push_back(mesh.point(mesh.source(h)));
+    h = mesh.next(h);
+  } while(h != first);
+  return loop;
+}
+
+EMesh transformed(EMesh mesh, const KE::Aff_transformation_3& t)
+{
+  for(V v : vertices(mesh))
+    mesh.point(v) = t.transform(mesh.point(v));
+  return mesh;
+}
+
+template <class Function>
+void for_each_mask(Function&& f)
+{
+  f(S::Butterfly_mask<EMesh>());
+  f(S::Modified_butterfly_mask<EMesh>());
+  f(S::Linear_triangle_mask<EMesh>());
+}
+
+} // namespace
+
+// =================================================================== tests
+
+TEST(Butterfly_family, stencils_sum_to_one_exactly_at_valences_3_to_12_and_on_borders)
+{
+  std::vector<std::pair<std::string, EMesh>> meshes;
+  for(int k = 3; k <= 12; ++k) {
+    meshes.emplace_back("bipyramid " + std::to_string(k), bipyramid(k));
+    meshes.emplace_back("fan " + std::to_string(k), fan(k));
+  }
+  meshes.emplace_back("grid", random_height_grid(6, 5).mesh);
+  meshes.emplace_back("strip", random_height_grid(6, 1).mesh); // interior edges with both ends on the border
+  meshes.emplace_back("triangle", random_height_grid(1, 1).mesh);
+  if(testing_utils::have_shared_data())
+    for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/star.off",
+                                  "cgal/corner_tris_with_hole.off", "cgal/tetrahedron.off"}) {
+      Mesh mesh;
+      ASSERT_TRUE(read_shared(name, mesh)) << name;
+      meshes.emplace_back(name, to_exact(mesh));
+    }
+  for(const auto& named : meshes)
+    for_each_mask([&](const auto& mask) { expect_affine_stencils(mask, named.second, named.first); });
+}
+
+TEST(Butterfly_family, old_vertices_are_kept_and_counts_are_v_plus_e_and_4f)
+{
+  std::vector<EMesh> meshes = {bipyramid(5), fan(7), random_height_grid(4, 3).mesh, bipyramid(3)};
+  for(const EMesh& input : meshes)
+    for_each_mask([&](const auto& mask) {
+      EMesh mesh = input;
+      S::subdivide(mesh, mask);
+      ASSERT_EQ(num_vertices(mesh), num_vertices(input) + num_edges(input)) << mask.name();
+      ASSERT_EQ(num_faces(mesh), 4 * num_faces(input)) << mask.name();
+      EXPECT_EQ(num_edges(mesh), 2 * num_edges(input) + 3 * num_faces(input)) << mask.name();
+      EXPECT_TRUE(mesh.is_valid(false)) << mask.name();
+      for(V v : vertices(input))
+        EXPECT_EQ(mesh.point(v), input.point(v)) << mask.name() << ", vertex " << v.idx();
+    });
+}
+
+TEST(Butterfly_family, a_planar_mesh_stays_planar_exactly)
+{
+  // the plane z = (x + 2y)/3 + 1/7, vertices moved inside it off the lattice
+  Rationals r;
+  const auto on_plane = [](const FT& x, const FT& y) -> P {
+    return P(x, y, (x + FT(2) * y) / FT(3) + FT(1) / FT(7));
+  };
+  const std::vector<EMesh> meshes = {
+    grid(5, 4, [&](int i, int j) { return on_plane(FT(i) + r() / FT(4), FT(j) + r() / FT(4)); }).mesh,
+    fan(
+      5, [&](int i) { return on_plane(FT(i * i % 7) + r(), FT(i) + r()); }, on_plane(FT(2), FT(2))),
+    fan(
+      8, [&](int i) { return on_plane(FT(i * 3 % 5) + r(), FT(i) + r()); }, on_plane(FT(1), FT(3)))};
+  for(const EMesh& input : meshes)
+    for_each_mask([&](const auto& mask) {
+      EMesh mesh = input;
+      S::subdivide(mesh, mask, CGAL::parameters::number_of_iterations(2));
+      for(V v : vertices(mesh)) {
+        const P& p = mesh.point(v);
+        EXPECT_EQ(p, on_plane(p.x(), p.y())) << mask.name() << ", vertex " << v.idx();
+      }
+    });
+}
+
+TEST(Butterfly_family, subdivision_commutes_with_affine_maps_exactly)
+{
+  // valence 7 has irrational modified butterfly weights: their sum is still exactly 1
+  const KE::Aff_transformation_3 t(FT(2), FT(1) / FT(3), FT(-1), FT(5), //
+                                   FT(0), FT(3) / FT(2), FT(1) / FT(5), FT(-2), //
+                                   FT(1), FT(1), FT(1) / FT(7), FT(1) / FT(9));
+  const std::vector<EMesh> meshes = {bipyramid(7), fan(5), random_height_grid(4, 3).mesh, bipyramid(4)};
+  for(const EMesh& input : meshes)
+    for_each_mask([&](const auto& mask) {
+      EMesh then_map = input, map_then = transformed(input, t);
+      S::subdivide(then_map, mask);
+      S::subdivide(map_then, mask);
+      then_map = transformed(then_map, t);
+      for(V v : vertices(then_map))
+        EXPECT_EQ(then_map.point(v), map_then.point(v)) << mask.name() << ", vertex " << v.idx();
+    });
+}
+
+TEST(Butterfly, regular_edge_is_the_hand_formula_one_half_one_eighth_minus_one_sixteenth)
+{
+  const Grid g = random_height_grid(7, 7);
+  EMesh mesh = g.mesh;
+  S::butterfly_subdivision(mesh);
+  const int i = 3, j = 3; // the edge (3,3)-(4,3)
+  const auto z = [&](int a, int b) -> FT { return g.mesh.point(g.at(a, b)).z(); };
+  const FT expected = (z(i, j) + z(i + 1, j)) / FT(2) + (z(i + 1, j + 1) + z(i, j - 1)) / FT(8) -
+                      (z(i + 2, j + 1) + z(i, j + 1) + z(i - 1, j - 1) + z(i + 1, j - 1)) / FT(16);
+  const auto e = edge(g.mesh.halfedge(g.at(i, j), g.at(i + 1, j)), g.mesh);
+  const P& point = mesh.point(V(static_cast<EMesh::size_type>(num_vertices(g.mesh) + e.idx())));
+  EXPECT_EQ(point, P(FT(7) / FT(2), FT(3), expected));
+}
+
+TEST(Butterfly, reproduces_cubics_on_a_regular_mesh_and_modified_butterfly_equals_it_at_valence_6)
+{
+  // z = cubic in (x, y); edges whose ends are both interior have the full stencil
+  const auto cubic = [](const FT& x, const FT& y) -> FT {
+    return FT(2) * x * x * x - x * x * y + FT(3) * x * y * y / FT(4) - y * y * y / FT(5) + x * y - FT(7) * y + FT(1);
+  };
+  const Grid g = grid(8, 8, [&](int i, int j) { return P(FT(i), FT(j), cubic(FT(i), FT(j))); });
+  EMesh butterfly = g.mesh, modified = g.mesh, ten_point = g.mesh;
+  S::butterfly_subdivision(butterfly);
+  S::modified_butterfly_subdivision(modified);
+  S::subdivide(ten_point, S::Modified_butterfly_mask<EMesh>(FT(1) / FT(32)));
+  int regular_edges = 0;
+  for(auto e : edges(g.mesh)) {
+    const V a = source(halfedge(e, g.mesh), g.mesh), b = target(halfedge(e, g.mesh), g.mesh);
+    if(g.mesh.is_border(a) || g.mesh.is_border(b))
+      continue;
+    ++regular_edges;
+    const V new_vertex(static_cast<EMesh::size_type>(num_vertices(g.mesh) + e.idx()));
+    const P mid = CGAL::midpoint(g.mesh.point(a), g.mesh.point(b));
+    const P on_cubic(mid.x(), mid.y(), cubic(mid.x(), mid.y()));
+    EXPECT_EQ(butterfly.point(new_vertex), on_cubic) << "edge " << e.idx();
+    EXPECT_EQ(modified.point(new_vertex), butterfly.point(new_vertex)) << "edge " << e.idx();
+    EXPECT_EQ(ten_point.point(new_vertex), on_cubic) << "edge " << e.idx();
+  }
+  EXPECT_EQ(regular_edges, 42 + 42 + 36); // between the 7 x 7 interior vertices: rows, columns, diagonals
+}
+
+TEST(Modified_butterfly, extraordinary_weights_are_the_papers)
+{
+  using W = S::Modified_butterfly_weights<FT>;
+  const W three(3), four(4), six(6);
+  EXPECT_EQ(three.ring, (std::vector<FT>{FT(5) / FT(12), FT(-1) / FT(12), FT(-1) / FT(12)}));
+  EXPECT_EQ(three.centre, FT(3) / FT(4));
+  EXPECT_EQ(four.ring, (std::vector<FT>{FT(3) / FT(8), FT(0), FT(-1) / FT(8), FT(0)}));
+  EXPECT_EQ(four.centre, FT(3) / FT(4));
+  // valence 6 (the formula; the mask uses the butterfly there): rational
+  EXPECT_EQ(six.ring, (std::vector<FT>{FT(7) / FT(24), FT(1) / FT(12), FT(-1) / FT(12), FT(-1) / FT(24),
+                                      FT(-1) / FT(12), FT(1) / FT(12)}));
+  EXPECT_EQ(six.centre, FT(3) / FT(4));
+  for(int k : {3, 4, 6})
+    EXPECT_TRUE(W::is_exact(k)) << k;
+  for(int k = 5; k <= 40; ++k) {
+    if(k == 6)
+      continue;
+    EXPECT_FALSE(W::is_exact(k)) << k;
+    const W weights(k);
+    FT sum = weights.centre;
+    for(int j = 0; j < k; ++j) {
+      sum += weights.ring[j];
+      EXPECT_EQ(weights.ring[j], weights.ring[(k - j) % k]) << "symmetric, k = " << k;
+      const double pi = 3.14159265358979323846;
+      const double formula = (0.25 + std::cos(2 * pi * j / k) + 0.5 * std::cos(4 * pi * j / k)) / k;
+      EXPECT_NEAR(CGAL::to_double(weights.ring[j]), formula, 1e-15) << k << " " << j;
+    }
+    EXPECT_EQ(sum, FT(1)) << k;
+    EXPECT_NEAR(CGAL::to_double(weights.centre), 0.75, 1e-15) << k;
+  }
+}
+
+TEST(Modified_butterfly, edge_stencils_at_extraordinary_ends)
+{
+  using W = S::Modified_butterfly_weights<FT>;
+  const S::Modified_butterfly_mask<EMesh> mask;
+  for(int k = 3; k <= 12; ++k) {
+    // a fan: the edge from the interior apex (valence k != 6) to a border
+    // vertex uses the apex's stencil alone; at valence 6 the reflected butterfly
+    const EMesh f = fan(k);
+    const W weights(k);
+    const V apex(0), first(1);
+    const Recorder s = edge_stencil(mask, f, apex, first);
+    if(k == 6) {
+      EXPECT_TRUE(same_stencil(s, edge_stencil(S::Butterfly_mask<EMesh>(), f, apex, first))) << describe(s);
+    } else {
+      EXPECT_EQ(s.weight(apex), weights.centre) << k;
+      for(int j = 0; j < k; ++j)
+        EXPECT_EQ(s.weight(V(static_cast<EMesh::size_type>(1 + j))), weights.ring[j]) << k << " " << j;
+    }
+
+    // a bipyramid: apex (valence k) to a ring vertex (valence 4): the average
+    // of the two stencils (only the ring vertex's when the apex is regular, k = 6)
+    const EMesh b = bipyramid(k);
+    const V top(0), bottom(1), ring0(2);
+    const Recorder t = edge_stencil(mask, b, top, ring0);
+    Recorder expected;
+    const FT apex_share = k == 6 ? FT(0) : FT(1) / FT(2);
+    const FT ring_share = k == 6 ? FT(1) : FT(1) / FT(2);
+    expected.add(top, apex_share * weights.centre);
+    for(int j = 0; j < k; ++j) // ring0, ring1, ... around the top
+      expected.add(V(static_cast<EMesh::size_type>(2 + j)), apex_share * weights.ring[j]);
+    const W four(4); // around ring0: top, ring1, bottom, ring_{k-1}
+    expected.add(ring0, ring_share * four.centre);
+    expected.add(top, ring_share * four.ring[0]);
+    expected.add(V(3), ring_share * four.ring[1]);
+    expected.add(bottom, ring_share * four.ring[2]);
+    expected.add(V(static_cast<EMesh::size_type>(2 + k - 1)), ring_share * four.ring[3]);
+    EXPECT_TRUE(same_stencil(t, expected)) << k << ":" << describe(t) << " vs" << describe(expected);
+  }
+}
+
+TEST(Butterfly, missing_outer_vertex_is_reflected_through_the_border_edge)
+{
+  // edge (2,0)-(3,1) of a grid: the outer vertex across the border edge
+  // (2,0)-(3,0) is missing; the reflection (2,0) + (3,0) - (3,1) moves -1/16
+  // onto those three vertices
+  const Grid g = random_height_grid(5, 3);
+  const S::Butterfly_mask<EMesh> mask;
+  const Recorder s = edge_stencil(mask, g.mesh, g.at(2, 0), g.at(3, 1));
+  Recorder expected;
+  expected.add(g.at(2, 0), FT(7) / FT(16));
+  expected.add(g.at(3, 1), FT(9) / FT(16));
+  expected.add(g.at(3, 0), FT(1) / FT(16));
+  expected.add(g.at(2, 1), FT(1) / FT(8));
+  expected.add(g.at(4, 1), FT(-1) / FT(16));
+  expected.add(g.at(3, 2), FT(-1) / FT(16));
+  expected.add(g.at(1, 0), FT(-1) / FT(16));
+  EXPECT_TRUE(same_stencil(s, expected)) << describe(s);
+
+  // on a linear function the reflected stencil still gives the midpoint
+  const Grid linear = grid(5, 3, [](int i, int j) { return P(FT(i), FT(j), FT(3 * i - 2 * j) / FT(7)); });
+  EMesh mesh = linear.mesh;
+  S::butterfly_subdivision(mesh);
+  const auto e = edge(linear.mesh.halfedge(linear.at(2, 0), linear.at(3, 1)), linear.mesh);
+  EXPECT_EQ(mesh.point(V(static_cast<EMesh::size_type>(num_vertices(linear.mesh) + e.idx()))),
+            P(FT(5) / FT(2), FT(1) / FT(2), FT(13) / FT(14)));
+}
+
+TEST(Butterfly_family, every_border_loop_is_refined_by_the_four_point_curve_scheme)
+{
+  const Grid g = random_height_grid(5, 4);
+  const auto check = [&](const auto& mask, const FT& w) {
+    EMesh mesh = g.mesh;
+    S::subdivide(mesh, mask, CGAL::parameters::number_of_iterations(2));
+    const std::vector<P> expected =
+      S::refine_polyline(border_loop(g.mesh, V(0)), S::Four_point_scheme<FT>(w),
+                         S::Polyline_options().closed(true).number_of_iterations(2));
+    EXPECT_EQ(border_loop(mesh, V(0)), expected) << mask.name() << ", w = " << w;
+  };
+  check(S::Butterfly_mask<EMesh>(), FT(1) / FT(16));
+  check(S::Butterfly_mask<EMesh>(FT(1) / FT(10)), FT(1) / FT(10)); // the tension reaches the border
+  check(S::Modified_butterfly_mask<EMesh>(), FT(1) / FT(16));
+  check(S::Modified_butterfly_mask<EMesh>(FT(-1) / FT(32)), FT(1) / FT(16));
+  check(S::Linear_triangle_mask<EMesh>(), FT(0));
+}
+
+TEST(Linear_triangle, refined_mesh_lies_on_the_old_faces_with_exact_midpoints)
+{
+  for(const EMesh& input : {bipyramid(5), random_height_grid(3, 3).mesh, fan(6)}) {
+    EMesh mesh = input;
+    S::linear_triangle_subdivision(mesh);
+    for(V v : vertices(input))
+      EXPECT_EQ(mesh.point(v), input.point(v));
+    for(auto e : edges(input)) {
+      const V new_vertex(static_cast<EMesh::size_type>(num_vertices(input) + e.idx()));
+      EXPECT_EQ(mesh.point(new_vertex), CGAL::midpoint(input.point(source(halfedge(e, input), input)),
+                                                       input.point(target(halfedge(e, input), input))));
+    }
+    for(auto f : faces(mesh)) { // new face f lies in old face f / 4
+      const auto parent = EMesh::Face_index(static_cast<EMesh::size_type>(f.idx() / 4));
+      const auto h = halfedge(parent, input);
+      const KE::Triangle_3 old(input.point(source(h, input)), input.point(target(h, input)),
+                               input.point(target(next(h, input), input)));
+      for(V v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        EXPECT_TRUE(old.has_on(mesh.point(v))) << "face " << f.idx();
+    }
+  }
+}
+
+TEST(Butterfly_family, tension_out_of_range_is_refused)
+{
+  using testing_utils::bad_input_message;
+  EXPECT_NE(bad_input_message([] { S::Butterfly_mask<EMesh>(FT(-1) / FT(100)); }).find("0 <= w < 1/4"),
+            std::string::npos);
+  EXPECT_NE(bad_input_message([] { S::Butterfly_mask<EMesh>(FT(1) / FT(4)); }).find("tension"), std::string::npos);
+  EXPECT_EQ(bad_input_message([] { S::Butterfly_mask<EMesh>(FT(0)); }), "no exception");
+  EXPECT_NE(bad_input_message([] { S::Modified_butterfly_mask<EMesh>(FT(1) / FT(8)); }).find("-1/16 <= w <= 1/16"),
+            std::string::npos);
+}
+
+TEST(Butterfly_family, quad_mesh_is_refused_and_left_unchanged)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh quad;
+  ASSERT_TRUE(read_shared("cgal/cube_quad.off", quad));
+  const std::vector<K::Point_3> before = testing_utils::double_points(quad);
+  const std::size_t faces_before = num_faces(quad);
+  using Call = std::function<void()>;
+  for(const auto& [name, call] : std::vector<std::pair<std::string, Call>>{
+        {"butterfly", [&] { S::butterfly_subdivision(quad); }},
+        {"modified butterfly", [&] { S::modified_butterfly_subdivision(quad); }},
+        {"linear triangle", [&] { S::linear_triangle_subdivision(quad); }}}) {
+    const std::string message = testing_utils::bad_input_message(call);
+    EXPECT_EQ(message.rfind(name + " needs a mesh whose faces all have 3 vertices; face 0 has 4", 0), 0u) << message;
+    EXPECT_EQ(num_faces(quad), faces_before);
+    EXPECT_EQ(testing_utils::double_points(quad), before);
+  }
+}
+
+TEST(Butterfly_family, surface_mesh_polyhedron_and_epeck_agree)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+  const std::string name = "cgal/mesh_with_border.off";
+  CGAL::Polyhedron_3<K> poly;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), poly));
+  CGAL::Surface_mesh<Epeck::Point_3> exact;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), exact));
+  Mesh sm;
+  ASSERT_TRUE(read_shared(name, sm));
+  for(int scheme = 0; scheme < 3; ++scheme) {
+    auto p = poly;
+    auto e = exact;
+    auto s = sm;
+    const auto run = [scheme](auto& mesh, int levels) {
+      const auto np = CGAL::parameters::number_of_iterations(levels);
+      if(scheme == 0)
+        S::butterfly_subdivision(mesh, np);
+      else if(scheme == 1)
+        S::modified_butterfly_subdivision(mesh, np);
+      else
+        S::linear_triangle_subdivision(mesh, np);
+    };
+    run(p, 2);
+    run(s, 2);
+    EXPECT_TRUE(p.is_valid()) << scheme;
+    EXPECT_EQ(num_vertices(p), num_vertices(s)) << scheme;
+    EXPECT_LT(position_mismatch(p, s), 1e-14) << scheme;
+    Mesh s1 = sm;
+    run(s1, 1);
+    run(e, 1);
+    EXPECT_EQ(num_faces(e), 4 * num_faces(sm)) << scheme;
+    EXPECT_LT(position_mismatch(e, s1), 1e-14) << scheme;
+  }
+}
+
+TEST(Butterfly_family, meshes_with_borders_run_two_levels_and_stay_valid)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/corner_tris_with_hole.off",
+                                "cgal/patch-23.off", "cgal/elephant.off"})
+    for(int scheme = 0; scheme < 3; ++scheme) {
+      Mesh mesh;
+      ASSERT_TRUE(read_shared(name, mesh)) << name;
+      const std::size_t v = num_vertices(mesh), e = num_edges(mesh), f = num_faces(mesh);
+      const auto np = CGAL::parameters::number_of_iterations(2);
+      if(scheme == 0)
+        S::butterfly_subdivision(mesh, np);
+      else if(scheme == 1)
+        S::modified_butterfly_subdivision(mesh, np);
+      else
+        S::linear_triangle_subdivision(mesh, np);
+      EXPECT_TRUE(mesh.is_valid(false)) << name << " " << scheme;
+      EXPECT_EQ(num_faces(mesh), 16 * f) << name;
+      EXPECT_EQ(num_vertices(mesh), v + e + (2 * e + 3 * f)) << name; // level 2 adds one per level-1 edge
+      for(auto w : vertices(mesh))
+        EXPECT_TRUE(std::isfinite(mesh.point(w).x()));
+    }
+}
