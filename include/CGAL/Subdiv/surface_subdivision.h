@@ -10,10 +10,12 @@
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
+#include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Sqrt3_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
 
 namespace CGAL {
@@ -73,6 +75,23 @@ template <class PolygonMesh, class NamedParameters = parameters::Default_named_p
 void linear_quad_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
   subdivide(mesh, Linear_quad_mask<PolygonMesh>(), np);
+}
+
+/// Kobbelt's sqrt3 subdivision of a triangle mesh. The border is refined on
+/// every second step; which step is read from the mesh, so that the levels
+/// may be split across calls (see `Sqrt3_split`). \sa `subdivide()`, `Sqrt3_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Sqrt3_mask<PolygonMesh>(), np);
+}
+
+/// Labsik and Greiner's interpolating sqrt3 subdivision of a triangle mesh,
+/// with the border phase of `Sqrt3_split`. \sa `subdivide()`, `Interpolating_sqrt3_mask`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void interpolating_sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  subdivide(mesh, Interpolating_sqrt3_mask<PolygonMesh>(), np);
 }
 
 } // namespace Subdiv

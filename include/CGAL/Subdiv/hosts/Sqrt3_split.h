@@ -1,0 +1,388 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_HOSTS_SQRT3_SPLIT_H
+#define CGAL_SUBDIV_HOSTS_SQRT3_SPLIT_H
+
+#include <CGAL/Subdiv/hosts/Vertex_origin.h>
+#include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * Whether the border of `mesh` is due to be refined by the next sqrt3 step,
+ * i.e. whether the mesh is the output of a sqrt3 step that left its border
+ * alone (a "resting" step). Such a mesh is recognised by its connectivity
+ * alone: its vertices split into the old vertices (every border vertex among
+ * them) and the face points, such that
+ *   - no interior edge joins two old vertices (every old interior edge was
+ *     flipped), so every neighbour of an old vertex across an interior edge is
+ *     a face point;
+ *   - every triangle has at least one old vertex;
+ *   - every face point has exactly three old neighbours (the corners of its
+ *     old face), and there is one face point per three faces.
+ * Starting from the border vertices, these rules determine the split (a
+ * breadth-first labelling); the mesh is "pending" when the labelling reaches
+ * every vertex of every component with a border and satisfies all of them.
+ * Components without border are ignored (their refinement has no phase).
+ */
+template <class Mesh, class Numbering>
+bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  enum : char { unknown = 0, old_vertex = 1, face_point = 2 };
+
+  std::vector<char> label(num_vertices(mesh), unknown);
+  std::vector<vertex_descriptor> queue;
+  for(halfedge_descriptor h : halfedges(mesh))
+    if(is_border(h, mesh) && label[number(target(h, mesh))] == unknown) {
+      label[number(target(h, mesh))] = old_vertex;
+      queue.push_back(target(h, mesh));
+    }
+  if(queue.empty())
+    return false;
+  const auto set = [&](vertex_descriptor v, char value) -> bool {
+    char& l = label[number(v)];
+    if(l == unknown) {
+      l = value;
+      queue.push_back(v);
+      return true;
+    }
+    return l == value;
+  };
+  for(std::size_t i = 0; i < queue.size(); ++i) {
+    const vertex_descriptor v = queue[i];
+    const bool is_old = label[number(v)] == old_vertex;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+      // h runs from u to v; its face (if any) is (u, v, w)
+      const vertex_descriptor u = source(h, mesh);
+      if(is_old) {
+        if(!is_border_edge(h, mesh) && !set(u, face_point))
+          return false;
+        continue;
+      }
+      if(is_border(h, mesh))
+        return false; // a face point on the border
+      if(label[number(u)] == face_point && !set(target(next(h, mesh), mesh), old_vertex))
+        return false; // a triangle without old vertex
+    }
+  }
+  // every face of the labelled components is labelled and keeps the rules
+  std::size_t labelled_faces = 0, face_points = 0;
+  for(auto f : faces(mesh)) {
+    const halfedge_descriptor h = halfedge(f, mesh);
+    const char a = label[number(source(h, mesh))], b = label[number(target(h, mesh))],
+               c = label[number(target(next(h, mesh), mesh))];
+    if(a == unknown && b == unknown && c == unknown)
+      continue;
+    if(a == unknown || b == unknown || c == unknown)
+      return false;
+    if(a != old_vertex && b != old_vertex && c != old_vertex)
+      return false;
+    ++labelled_faces;
+  }
+  for(vertex_descriptor v : vertices(mesh)) {
+    if(label[number(v)] != face_point)
+      continue;
+    ++face_points;
+    int old_neighbours = 0;
+    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
+      old_neighbours += label[number(u)] == old_vertex;
+    if(old_neighbours != 3)
+      return false;
+  }
+  return 3 * face_points == labelled_faces;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivHosts
+ * One step of the sqrt3 split [Kobbelt 2000] of triangle meshes: a new vertex
+ * (face point) in every triangle, joined to its three corners, and every old
+ * interior edge flipped, so that it joins the face points of its two faces.
+ * On a closed mesh the step makes V + F vertices and 3F triangles (two per
+ * old edge); two steps split every triangle 1-to-9.
+ *
+ * <b>Border.</b> As in Kobbelt's paper, the border is refined only on every
+ * second step, by a 1-to-3 split of every border edge, so that two steps
+ * also split the border 1-to-3:
+ *   - on a <em>resting</em> step, a triangle with a border edge keeps it: the
+ *     face point is joined to the edge's ends without flip; border vertices
+ *     use the mask's `resting_border_vertex_node`;
+ *   - on a <em>refining</em> step, a triangle (t, s, c) with border edge
+ *     (t, s) gets no face point: the edge gets two new vertices p1, p2
+ *     (`border_edge_node(mesh, h, 1 or 2, acc)`, at one and two thirds of the
+ *     way from t), the triangle is split into (t, p1, c), (p1, p2, c),
+ *     (p2, s, c), and its edges (s, c), (c, t) are flipped as any old
+ *     interior edge; border vertices use `border_vertex_node`.
+ *
+ * <b>Which step refines the border</b> is decided from the mesh itself, so
+ * that it does not depend on how the levels are split across calls: a step
+ * refines the border exactly when the mesh is the output of a resting step
+ * (see `internal::sqrt3_border_is_pending` for the test, which reads the
+ * connectivity only). A mesh read from a file is thus rested first, as CGAL's
+ * `Sqrt3_subdivision` does on the first level of every call; after that the
+ * steps alternate, and one call with two iterations gives the same mesh as
+ * two calls with one. (CGAL's `Sqrt3_subdivision` restarts with a resting
+ * step at every call, so one-level calls never refine the border.) A mesh
+ * that happens to have the structure of a resting step's output (e.g. a fan
+ * of three triangles around an interior vertex of valence 3) is taken as
+ * such, and its border is refined on the first step. Closed meshes have no
+ * phase and need nothing.
+ *
+ * Numbering of the new vertices: the old vertices first, in the mesh's
+ * iteration order; then one face point per face, in face order (on a
+ * refining step, only for the faces without border edge); then, on a
+ * refining step, two vertices per border edge, p1 then p2, in the order of
+ * their faces. Numbering of the new faces: for every old face in face order,
+ * for each of its halfedges h (from `halfedge(f)` on), the triangle
+ * (target(h), face point of f, face point across h), or for a border
+ * halfedge the kept border triangle (resting step) or the middle triangle
+ * (p1, p2, c) (refining step).
+ *
+ * Masks used: `vertex_node(mesh, v, acc)` (interior vertices),
+ * `face_node(mesh, f, acc)`, `resting_border_vertex_node(mesh, v, acc)`,
+ * `border_vertex_node(mesh, h, acc)` (h: the border halfedge that ends at
+ * the vertex) and `border_edge_node(mesh, h, k, acc)` (h: the face halfedge
+ * of the border edge, k = 1, 2).
+ */
+template <class Mesh>
+class Sqrt3_split
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  using Index = internal::Face_soup::Index;
+
+  static constexpr int required_face_size = 3;
+  static double face_growth() { return 3; }
+
+  explicit Sqrt3_split(const Mesh& mesh)
+    : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh)),
+      m_face_count(num_faces(mesh))
+  {
+    // slots of the spokes (new edges from a face point to a corner): one per
+    // face halfedge, and on a refining step one per border halfedge
+    const std::size_t halfedge_count = 2 * m_edge_count;
+    m_border_edges = halfedge_count - 3 * m_face_count; // each triangle has 3 halfedges
+    if(m_border_edges == 0)
+      return;
+    m_refine_border = internal::sqrt3_border_is_pending(mesh, m_number);
+    m_slot.assign(halfedge_count, 0);
+    Index face_slot = 0, border_slot = static_cast<Index>(3 * m_face_count);
+    for(halfedge_descriptor h : halfedges(mesh))
+      m_slot[m_number(h)] = is_border(h, mesh) ? border_slot++ : face_slot++;
+    if(!m_refine_border)
+      return;
+    // refining: face points only for faces without border edge, then p1, p2
+    m_face_vertex.resize(m_face_count);
+    std::size_t point = m_vertex_count, border_point = m_vertex_count + m_face_count - m_border_edges;
+    for(face_descriptor f : CGAL::faces(mesh)) {
+      bool on_border = false;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        if(is_border(opposite(h, mesh), mesh)) {
+          on_border = true;
+          m_edge_of_border_face.push_back(static_cast<Index>(m_number(edge(h, mesh))));
+        }
+      if(on_border) {
+        m_face_vertex[m_number(f)] = static_cast<Index>(border_point);
+        border_point += 2;
+      } else {
+        m_face_of_point.push_back(static_cast<Index>(m_number(f)));
+        m_face_vertex[m_number(f)] = static_cast<Index>(point++);
+      }
+    }
+  }
+
+  /// whether this step refines the border (always false on a closed mesh)
+  bool refines_border() const { return m_refine_border; }
+
+  std::size_t number_of_new_vertices() const
+  {
+    return m_vertex_count + m_face_count + (m_refine_border ? m_border_edges : 0);
+  }
+  std::size_t number_of_new_faces() const { return 3 * m_face_count; }
+  std::size_t number_of_new_edges() const
+  {
+    return m_edge_count + 3 * m_face_count + (m_refine_border ? m_border_edges : 0);
+  }
+
+  /// face points have `Origin_kind::face`; on a refining step, both new
+  /// vertices of a border edge have `Origin_kind::edge` and the edge's ordinal
+  Vertex_origin origin(std::size_t j) const
+  {
+    if(j < m_vertex_count)
+      return {Origin_kind::vertex, j};
+    if(!m_refine_border)
+      return {Origin_kind::face, j - m_vertex_count};
+    const std::size_t k = j - m_vertex_count;
+    if(k < m_face_of_point.size())
+      return {Origin_kind::face, m_face_of_point[k]};
+    return {Origin_kind::edge, m_edge_of_border_face[(k - m_face_of_point.size()) / 2]};
+  }
+
+  /// calls visit(new index, report) for every new vertex; report(acc) makes the
+  /// mask report that vertex's weights to `acc`
+  template <class Mask, class Visitor>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  {
+    for(vertex_descriptor v : vertices(m_mesh)) {
+      const std::size_t j = m_number(v);
+      if(m_border_edges == 0) {
+        visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+        continue;
+      }
+      halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m_mesh))
+        if(is_border(h, m_mesh))
+          border_in = h;
+      if(border_in == boost::graph_traits<Mesh>::null_halfedge())
+        visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+      else if(m_refine_border)
+        visit(j, [&](auto& acc) { mask.border_vertex_node(m_mesh, border_in, acc); });
+      else
+        visit(j, [&](auto& acc) { mask.resting_border_vertex_node(m_mesh, v, acc); });
+    }
+    for(face_descriptor f : CGAL::faces(m_mesh)) {
+      if(!m_refine_border) {
+        visit(m_vertex_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+        continue;
+      }
+      const std::size_t j = m_face_vertex[m_number(f)];
+      halfedge_descriptor border_edge = boost::graph_traits<Mesh>::null_halfedge();
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
+        if(is_border(opposite(h, m_mesh), m_mesh))
+          border_edge = h;
+      if(border_edge == boost::graph_traits<Mesh>::null_halfedge()) {
+        visit(j, [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+      } else {
+        visit(j, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 1, acc); });
+        visit(j + 1, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 2, acc); });
+      }
+    }
+  }
+
+  internal::Face_soup faces() const
+  {
+    internal::Face_soup soup(number_of_new_vertices(), number_of_new_edges());
+    soup.reserve(3 * m_face_count, 9 * m_face_count);
+    if(m_border_edges == 0)
+      add_closed_faces(soup);
+    else
+      add_faces_with_border(soup);
+    return soup;
+  }
+
+private:
+  // Halfedge ids of the new mesh. New edge e (< E) replaces old edge e: the
+  // flipped edge between the face points of its two faces, or the kept
+  // border edge (on a refining step, the middle third of it); its halfedge
+  // 2e or 2e+1 runs from the face point of the face of old halfedge 2e or
+  // 2e+1 (so along the old halfedge for a kept border edge). Spoke s (one
+  // per face halfedge h: from target(h) to the face point of face(h)) is new
+  // edge E + s, halfedge 2(E+s) from the corner, 2(E+s)+1 to it.
+  std::size_t spoke_out(std::size_t slot) const { return 2 * (m_edge_count + slot); }
+  std::size_t spoke_in(std::size_t slot) const { return 2 * (m_edge_count + slot) + 1; }
+
+  // closed mesh: every halfedge h has a face, and its slot is its own number
+  void add_closed_faces(internal::Face_soup& soup) const
+  {
+    for(face_descriptor f : CGAL::faces(m_mesh)) {
+      const std::size_t parent = m_number(f);
+      const std::size_t centre = m_vertex_count + parent;
+      halfedge_descriptor h = halfedge(f, m_mesh);
+      for(int k = 0; k < 3; ++k, h = next(h, m_mesh)) {
+        // (target(h), centre, centre across h): the flip of old edge h
+        const halfedge_descriptor o = opposite(h, m_mesh);
+        const std::size_t id = m_number(h);
+        soup.corner(m_number(target(h, m_mesh)), spoke_out(id));
+        soup.corner(centre, id);
+        soup.corner(m_vertex_count + m_number(face(o, m_mesh)), spoke_in(m_number(prev(o, m_mesh))));
+        soup.close_face(parent);
+      }
+    }
+  }
+
+  void add_faces_with_border(internal::Face_soup& soup) const
+  {
+    for(face_descriptor f : CGAL::faces(m_mesh)) {
+      const std::size_t parent = m_number(f);
+      halfedge_descriptor h = halfedge(f, m_mesh);
+      for(int k = 0; k < 3; ++k, h = next(h, m_mesh)) {
+        const halfedge_descriptor o = opposite(h, m_mesh);
+        const std::size_t id = m_number(h);
+        if(!is_border(o, m_mesh)) {
+          soup.corner(m_number(target(h, m_mesh)), spoke_out(m_slot[id]));
+          soup.corner(centre(h), id);
+          soup.corner(centre(o), spoke_in(in_slot(o)));
+          soup.close_face(parent);
+        } else if(!m_refine_border) { // kept border triangle (source, target, centre)
+          soup.corner(m_number(source(h, m_mesh)), id);
+          soup.corner(m_number(target(h, m_mesh)), spoke_out(m_slot[id]));
+          soup.corner(centre(h), spoke_in(m_slot[m_number(prev(h, m_mesh))]));
+          soup.close_face(parent);
+        } else { // middle triangle (p1, p2, c) of a split border edge h = (t, s)
+          const std::size_t p1 = m_face_vertex[parent];
+          soup.corner(p1, id);
+          soup.corner(p1 + 1, spoke_in(m_slot[m_number(next(h, m_mesh))]));
+          soup.corner(m_number(target(next(h, m_mesh), m_mesh)), spoke_out(m_slot[m_number(o)]));
+          soup.close_face(parent);
+        }
+      }
+    }
+  }
+
+  // the new vertex that plays the face point of face(h) for the flip of h's
+  // edge: the face point, or on a refining step in a face with border edge
+  // b = (t, s), p1 for the edge (c, t) and p2 for the edge (s, c)
+  std::size_t centre(halfedge_descriptor h) const
+  {
+    if(!m_refine_border)
+      return m_vertex_count + m_number(face(h, m_mesh));
+    const std::size_t j = m_face_vertex[m_number(face(h, m_mesh))];
+    if(j < m_vertex_count + m_face_of_point.size())
+      return j;
+    return is_border(opposite(prev(h, m_mesh), m_mesh), m_mesh) ? j + 1 : j;
+  }
+
+  // slot of the spoke from centre(h) to source(h): the spoke of prev(h), or
+  // on a refining step, when next(h) is the border edge (t, s) and so h is
+  // (c, t), the spoke (c, p1), which takes the slot of the border halfedge
+  std::size_t in_slot(halfedge_descriptor h) const
+  {
+    if(m_refine_border) {
+      const halfedge_descriptor b = opposite(next(h, m_mesh), m_mesh);
+      if(is_border(b, m_mesh))
+        return m_slot[m_number(b)];
+    }
+    return m_slot[m_number(prev(h, m_mesh))];
+  }
+
+  const Mesh& m_mesh;
+  internal::Mesh_numbering<Mesh> m_number;
+  std::size_t m_vertex_count;
+  std::size_t m_edge_count;
+  std::size_t m_face_count;
+  std::size_t m_border_edges = 0;
+  bool m_refine_border = false;
+  std::vector<Index> m_slot;          // spoke slot of each halfedge (mesh with border)
+  std::vector<Index> m_face_vertex;   // refining step: face point, or p1 of a border face
+  std::vector<Index> m_face_of_point; // refining step: the face of each face point
+  std::vector<Index> m_edge_of_border_face; // refining step: the border edge of each border face
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_HOSTS_SQRT3_SPLIT_H

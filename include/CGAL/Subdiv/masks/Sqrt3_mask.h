@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_SQRT3_MASK_H
+#define CGAL_SUBDIV_MASKS_SQRT3_MASK_H
+
+#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
+#include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/loop_weights.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * Kobbelt's sqrt3 subdivision [Kobbelt 2000, "sqrt(3)-Subdivision",
+ * SIGGRAPH 2000] on triangle meshes; split: `Sqrt3_split`.
+ *
+ * - face point: the centroid, 1/3 for each corner;
+ * - interior vertex of valence n: \f$ (1 - \alpha_n) v + \frac{\alpha_n}{n} \sum_i v_i \f$
+ *   with \f$ \alpha_n = \frac{4 - 2\cos(2\pi/n)}{9} \f$. The weight is
+ *   rational at n = 3, 4, 6 (\f$\alpha\f$ = 5/9, 4/9, 1/3) and exact there in
+ *   an exact kernel; at other valences \f$\alpha_n\f$ is evaluated in double
+ *   precision (cos(2 pi / n) is the double nearest to it) and converted to
+ *   `FT`, so that an exact kernel gets weights that are exact rationals
+ *   within an ulp of the true ones, and that still sum to exactly 1.
+ * - border (Kobbelt's univariate rules, the ternary cubic B-spline, applied
+ *   on every second step only, see `Sqrt3_split`): on a refining step the
+ *   border edge (t, s), whose border neighbours beyond t and s are t' and s',
+ *   gets (16 t + 10 s + t') / 27 at one third from t and (10 t + 16 s + s') / 27
+ *   at two thirds; border vertex v with border neighbours u, w becomes
+ *   (4 u + 19 v + 4 w) / 27. On a resting step border vertices stay where
+ *   they are. These are the rules of CGAL's `Sqrt3_mask_3`.
+ *
+ * \tparam Mesh a model of `FaceGraph` whose faces are triangles
+ * \tparam FT the number type of the weights (by default the mesh's)
+ * \cgalModels `SurfaceSubdivisionMask`
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+class Sqrt3_mask
+{
+public:
+  using Number_type = FT;
+  using Host = Sqrt3_split<Mesh>;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  std::string name() const { return "sqrt3 (Kobbelt)"; }
+  bool is_interpolating() const { return false; }
+
+  /// \f$\alpha_n = (4 - 2\cos(2\pi/n)) / 9\f$
+  static FT alpha(int n) { return (FT(4) - FT(2) * internal::cos_two_pi_over<FT>(n)) / FT(9); }
+  /// whether `alpha(n)` is exact (n = 3, 4, 6)
+  static bool is_exact(int n)
+  {
+    bool exact = false;
+    internal::cos_two_pi_over<double>(n, &exact);
+    return exact;
+  }
+
+  template <class Accumulator>
+  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  {
+    const int n = static_cast<int>(degree(v, mesh));
+    const FT a = alpha(n);
+    const FT each = a / FT(n);
+    acc.add(v, FT(1) - a);
+    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
+      acc.add(u, each);
+  }
+
+  template <class Accumulator>
+  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  {
+    const FT third = FT(1) / FT(3);
+    for(vertex_descriptor u : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      acc.add(u, third);
+  }
+
+  /// border vertex on a step that leaves the border alone: kept
+  template <class Accumulator>
+  void resting_border_vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  {
+    acc.add(v, FT(1));
+  }
+
+  /// border vertex on a refining step; `h` is the border halfedge ending at it
+  template <class Accumulator>
+  void border_vertex_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  {
+    acc.add(source(h, mesh), FT(4) / FT(27));
+    acc.add(target(h, mesh), FT(19) / FT(27));
+    acc.add(target(next(h, mesh), mesh), FT(4) / FT(27));
+  }
+
+  /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge `h`
+  /// of a border edge, on a refining step
+  template <class Accumulator>
+  void border_edge_node(const Mesh& mesh, halfedge_descriptor h, int k, Accumulator& acc) const
+  {
+    const halfedge_descriptor b = opposite(h, mesh); // border halfedge, from s to t
+    vertex_descriptor t = source(h, mesh), s = target(h, mesh);
+    vertex_descriptor beyond_t = target(next(b, mesh), mesh);
+    if(k == 2) { // mirror
+      std::swap(t, s);
+      beyond_t = source(prev(b, mesh), mesh);
+    }
+    acc.add(t, FT(16) / FT(27));
+    acc.add(s, FT(10) / FT(27));
+    acc.add(beyond_t, FT(1) / FT(27));
+  }
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_SQRT3_MASK_H
