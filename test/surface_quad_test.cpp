@@ -1,0 +1,615 @@
+// Catmull-Clark, linear quad split and Doo-Sabin: agreement with CGAL's
+// Subdivision_method_3 and OpenSubdiv, exact weights and invariances, borders,
+// other mesh types, bad input.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <gtest/gtest.h>
+
+#include "mesh_test_utils.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace S = CGAL::Subdiv;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using KX = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using FX = KX::FT;
+using PX = KX::Point_3;
+using Exact_mesh = CGAL::Surface_mesh<PX>;
+using VX = Exact_mesh::Vertex_index;
+
+using testing_utils::position_mismatch;
+using testing_utils::shared_mesh;
+
+namespace {
+
+Mesh read_mesh(const std::string& name)
+{
+  Mesh mesh;
+  const bool obj = name.size() > 4 && name.substr(name.size() - 4) == ".obj";
+  const bool ok = obj ? testing_utils::read_obj_positions(shared_mesh(name), mesh)
+                      : CGAL::IO::read_polygon_mesh(shared_mesh(name), mesh);
+  EXPECT_TRUE(ok) << name;
+  return mesh;
+}
+
+// the same mesh with exact coordinates (doubles convert exactly), same indices
+Exact_mesh to_exact(const Mesh& mesh)
+{
+  Exact_mesh exact;
+  for(auto v : vertices(mesh)) {
+    const K::Point_3& p = mesh.point(v);
+    exact.add_vertex(PX(FX(p.x()), FX(p.y()), FX(p.z())));
+  }
+  for(auto f : faces(mesh)) {
+    std::vector<VX> corners;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.push_back(VX(v.idx()));
+    exact.add_face(corners);
+  }
+  return exact;
+}
+
+template <class M>
+long euler_characteristic(const M& mesh)
+{
+  return static_cast<long>(num_vertices(mesh)) - static_cast<long>(num_edges(mesh)) +
+         static_cast<long>(num_faces(mesh));
+}
+
+template <class M>
+std::size_t corner_count(const M& mesh)
+{
+  std::size_t c = 0;
+  for(auto h : halfedges(mesh))
+    c += CGAL::is_border(h, mesh) ? 0 : 1;
+  return c;
+}
+
+// meshes of CGAL's data set, closed, with any face sizes
+const char* const closed_meshes[] = {"cgal/cube_quad.off",  "cgal/corner.off",   "cgal/P.off",
+                                     "cgal/mpi.off",        "cgal/3torus.off",   "cgal/cross_quad.off",
+                                     "cgal/corner_poly.off", "cgal/elephant.off", "cgal/double-torus-example.off"};
+const char* const border_meshes[] = {"cgal/corner_with_hole.off", "cgal/double-torus-3-holes.off",
+                                     "cgal/mesh_with_border.off", "cgal/corner_with_sharp_edge.off",
+                                     "cgal/mesh_with_colors.off"};
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// Agreement with CGAL's Subdivision_method_3
+
+TEST(CatmullClark, matches_cgal_subdivision_method_3_closed_and_with_border)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  std::vector<std::string> names(std::begin(closed_meshes), std::end(closed_meshes));
+  names.insert(names.end(), std::begin(border_meshes), std::end(border_meshes));
+  for(const std::string& name : names) {
+    Mesh ours = read_mesh(name);
+    Mesh theirs = ours;
+    S::catmull_clark_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+    theirs.collect_garbage();
+    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
+    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
+    EXPECT_TRUE(ours.is_valid(false)) << name;
+    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
+  }
+}
+
+TEST(DooSabin, matches_cgal_subdivision_method_3_on_closed_meshes)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : closed_meshes) {
+    Mesh ours = read_mesh(name);
+    Mesh theirs = ours;
+    S::doo_sabin_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+    CGAL::Subdivision_method_3::DooSabin_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+    theirs.collect_garbage();
+    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
+    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
+    EXPECT_TRUE(ours.is_valid(false)) << name;
+    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
+  }
+}
+
+// With a border, CGAL's Doo-Sabin moves every corner by the face rule and
+// makes no face at border vertices; ours puts border corners on Chaikin's
+// points and closes border vertices with 3 or more faces. Every new vertex of
+// ours that is not on the border is a vertex of CGAL's result, and CGAL's has
+// the border zigzag of extra faces.
+TEST(DooSabin, interior_agrees_with_cgal_on_meshes_with_border)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : border_meshes) {
+    Mesh ours = read_mesh(name);
+    Mesh theirs = ours;
+    S::doo_sabin_subdivision(ours);
+    CGAL::Subdivision_method_3::DooSabin_subdivision(theirs);
+    theirs.collect_garbage();
+    EXPECT_TRUE(ours.is_valid(false)) << name;
+    EXPECT_EQ(num_vertices(ours), num_vertices(theirs)) << name; // one per corner in both
+    std::vector<testing_utils::Double_point> inside;
+    for(auto v : vertices(ours))
+      if(!CGAL::is_border(v, ours))
+        inside.push_back(testing_utils::Double_point(ours.point(v)));
+    EXPECT_LT(position_mismatch(inside, testing_utils::double_points(theirs)), 1e-12) << name;
+    EXPECT_GT(position_mismatch(ours, theirs), 1e-3) << name; // the border corners differ
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Agreement with OpenSubdiv: <shape>_levelN.obj holds N+1 uniform steps of
+// opensubdiv/<shape>.obj (checked here by the counts), written from floats.
+
+TEST(CatmullClark, matches_opensubdiv_reference_results)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  struct Case
+  {
+    std::string shape;
+    S::Border_corners corners;
+  };
+  // catmark_cube and catmark_pyramid are closed; catmark_tent uses "edges
+  // only", and catmark_flap has no boundary tag: at their valence-2 corners
+  // the baselines follow the smooth border rule 1/8, 6/8, 1/8, as ours by
+  // default; catmark_edgecorner uses "edges and corners" (Border_corners::sharp).
+  for(const Case& c : {Case{"catmark_cube", S::Border_corners::smooth}, Case{"catmark_pyramid", S::Border_corners::smooth},
+                       Case{"catmark_tent", S::Border_corners::smooth},
+                       Case{"catmark_edgecorner", S::Border_corners::sharp},
+                       Case{"catmark_flap", S::Border_corners::smooth}}) {
+    Mesh mesh = read_mesh("opensubdiv/" + c.shape + ".obj");
+    for(int level = 0; level <= 2; ++level) {
+      S::subdivide(mesh, S::Catmull_clark_mask<Mesh>(c.corners));
+      const Mesh reference =
+        read_mesh("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj");
+      ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
+      ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
+      // the baselines print 6 significant digits: catmark_flap is 0.3 across
+      // at 1.9 from the origin, so its last digit is 1.7e-5 of its size
+      EXPECT_LT(position_mismatch(mesh, reference), 2e-5) << c.shape << " level " << level;
+    }
+  }
+}
+
+// The deliberate difference: by default a corner with a single face follows
+// the smooth border rule (CGAL, OpenSubdiv "edges only"); OpenSubdiv's "edges
+// and corners" keeps it in place.
+TEST(CatmullClark, default_border_corners_differ_from_opensubdiv_edge_and_corner_mode)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh smooth = read_mesh("opensubdiv/catmark_edgecorner.obj");
+  const Mesh reference = read_mesh("opensubdiv_hbr_baseline/catmark_edgecorner_level0.obj");
+  S::catmull_clark_subdivision(smooth);
+  EXPECT_GT(position_mismatch(smooth, reference), 1e-3);
+  // ... and only at the corners: every vertex but the moved corners has its partner
+  std::vector<testing_utils::Double_point> not_corners;
+  for(auto v : vertices(smooth))
+    if(!(CGAL::is_border(v, smooth) && degree(v, smooth) == 2))
+      not_corners.push_back(testing_utils::Double_point(smooth.point(v)));
+  EXPECT_LT(position_mismatch(not_corners, testing_utils::double_points(reference)), 1e-6);
+}
+
+// ---------------------------------------------------------------------------
+// Exact weights
+
+namespace {
+
+using Stencil = S::Stencil<VX, FX>;
+
+// every new vertex's weights sum to exactly 1
+template <class Mask>
+void expect_weights_sum_to_one(const Exact_mesh& mesh, const Mask& mask)
+{
+  const typename Mask::Host host(mesh);
+  std::size_t count = 0;
+  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+    Stencil stencil;
+    report(stencil);
+    EXPECT_EQ(stencil.weight_sum(), FX(1)) << mask.name() << ", new vertex " << j;
+    ++count;
+  });
+  EXPECT_EQ(count, host.number_of_new_vertices());
+}
+
+bool same_stencil(const Stencil& a, const Stencil& b)
+{
+  if(a.size() != b.size())
+    return false;
+  for(const auto& term : a.terms())
+    if(b.weight(term.first) != term.second)
+      return false;
+  return true;
+}
+
+// an n x n grid of vertices (i, j, z_ij) with generic rational heights
+Exact_mesh grid(int n, std::vector<std::vector<VX>>& id)
+{
+  Exact_mesh mesh;
+  id.assign(n, std::vector<VX>(n));
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      id[i][j] = mesh.add_vertex(PX(i, j, FX(3 * i * i + 7 * j + i * j + 1) / FX(5 + i + 2 * j)));
+  for(int i = 0; i + 1 < n; ++i)
+    for(int j = 0; j + 1 < n; ++j)
+      mesh.add_face(id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]);
+  return mesh;
+}
+
+// the cubic B-spline curve masks: vertex (1/8, 6/8, 1/8), edge (1/2, 1/2)
+FX vertex_mask(int d) { return d == 0 ? FX(6) / FX(8) : FX(1) / FX(8); }
+FX edge_mask(int) { return FX(1) / FX(2); }
+
+} // namespace
+
+TEST(CatmullClark, exact_weights_sum_to_one)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/mpi.off", "cgal/P.off", "cgal/double-torus-3-holes.off"}) {
+    const Exact_mesh mesh = to_exact(read_mesh(name));
+    expect_weights_sum_to_one(mesh, S::Catmull_clark_mask<Exact_mesh>());
+    expect_weights_sum_to_one(mesh, S::Catmull_clark_mask<Exact_mesh>(S::Border_corners::sharp));
+    expect_weights_sum_to_one(mesh, S::Linear_quad_mask<Exact_mesh>());
+    // Doo-Sabin: also for the 5-, 7-, 8-, 9- and 10-gons of mpi.off, whose
+    // cosines are rounded: the centre weight is 1 minus the others
+    expect_weights_sum_to_one(mesh, S::Doo_sabin_mask<Exact_mesh>());
+  }
+}
+
+// On a regular grid, Catmull-Clark is the bicubic uniform B-spline: its rules
+// are the tensor products of the cubic B-spline curve rules, and in the form
+// of the lecture notes, with face points f (of the faces around) and edge
+// neighbours e: edge point 1/4 (v + e + f + f'), vertex point
+// 1/2 v + 1/16 sum e + 1/16 sum f.
+TEST(CatmullClark, regular_grid_rules_are_the_bicubic_bspline_rules)
+{
+  std::vector<std::vector<VX>> id;
+  const Exact_mesh mesh = grid(7, id);
+  const S::Catmull_clark_mask<Exact_mesh> mask;
+  const auto face_point = [&](int i, int j, const FX& s, Stencil& acc) { // face of cell (i, j)
+    for(int a = 0; a < 2; ++a)
+      for(int b = 0; b < 2; ++b)
+        acc.add(id[i + a][j + b], s / FX(4));
+  };
+  for(int i = 2; i <= 4; ++i)
+    for(int j = 2; j <= 4; ++j) {
+      // vertex (i, j)
+      Stencil ours, tensor, notes;
+      mask.vertex_node(mesh, id[i][j], ours);
+      for(int a = -1; a <= 1; ++a)
+        for(int b = -1; b <= 1; ++b)
+          tensor.add(id[i + a][j + b], vertex_mask(a) * vertex_mask(b));
+      notes.add(id[i][j], FX(1) / FX(2));
+      for(const auto& d : {std::make_pair(1, 0), std::make_pair(-1, 0), std::make_pair(0, 1), std::make_pair(0, -1)})
+        notes.add(id[i + d.first][j + d.second], FX(1) / FX(16));
+      for(int a = -1; a <= 0; ++a)
+        for(int b = -1; b <= 0; ++b)
+          face_point(i + a, j + b, FX(1) / FX(16), notes);
+      EXPECT_TRUE(same_stencil(ours, tensor)) << i << " " << j;
+      EXPECT_TRUE(same_stencil(ours, notes)) << i << " " << j;
+      EXPECT_EQ(ours.weight(id[i][j]), FX(9) / FX(16));
+      EXPECT_EQ(ours.weight(id[i + 1][j]), FX(3) / FX(32));
+      EXPECT_EQ(ours.weight(id[i + 1][j + 1]), FX(1) / FX(64));
+
+      // edge (i, j) - (i + 1, j), between cells (i, j - 1) and (i, j)
+      Stencil ours_edge, tensor_edge, notes_edge;
+      mask.edge_node(mesh, halfedge(id[i][j], id[i + 1][j], mesh).first, ours_edge);
+      for(int a = 0; a <= 1; ++a)
+        for(int b = -1; b <= 1; ++b)
+          tensor_edge.add(id[i + a][j + b], edge_mask(a) * vertex_mask(b));
+      notes_edge.add(id[i][j], FX(1) / FX(4));
+      notes_edge.add(id[i + 1][j], FX(1) / FX(4));
+      face_point(i, j - 1, FX(1) / FX(4), notes_edge);
+      face_point(i, j, FX(1) / FX(4), notes_edge);
+      EXPECT_TRUE(same_stencil(ours_edge, tensor_edge)) << i << " " << j;
+      EXPECT_TRUE(same_stencil(ours_edge, notes_edge)) << i << " " << j;
+
+      // face of cell (i, j)
+      Stencil ours_face, tensor_face;
+      mask.face_node(mesh, face(halfedge(id[i][j], id[i + 1][j], mesh).first, mesh), ours_face);
+      for(int a = 0; a <= 1; ++a)
+        for(int b = 0; b <= 1; ++b)
+          tensor_face.add(id[i + a][j + b], edge_mask(a) * edge_mask(b));
+      EXPECT_TRUE(same_stencil(ours_face, tensor_face)) << i << " " << j;
+    }
+}
+
+// Doo-Sabin on a quad is the biquadratic B-spline: 9/16, 3/16, 3/16, 1/16
+TEST(DooSabin, quad_weights_are_the_biquadratic_bspline_weights)
+{
+  std::vector<std::vector<VX>> id;
+  const Exact_mesh mesh = grid(4, id);
+  Stencil ours;
+  S::Doo_sabin_mask<Exact_mesh>().corner_node(mesh, halfedge(id[1][1], id[2][1], mesh).first, ours);
+  EXPECT_EQ(ours.size(), 4u);
+  EXPECT_EQ(ours.weight(id[2][1]), FX(9) / FX(16));
+  EXPECT_EQ(ours.weight(id[1][1]), FX(3) / FX(16));
+  EXPECT_EQ(ours.weight(id[2][2]), FX(3) / FX(16));
+  EXPECT_EQ(ours.weight(id[1][2]), FX(1) / FX(16));
+}
+
+// ---------------------------------------------------------------------------
+// Counts, Euler characteristic, affine invariance, planarity (exact)
+
+TEST(QuadSplit, counts_and_euler_characteristic)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  std::vector<std::string> names(std::begin(closed_meshes), std::end(closed_meshes));
+  names.insert(names.end(), std::begin(border_meshes), std::end(border_meshes));
+  for(const std::string& name : names) {
+    const Mesh mesh = read_mesh(name);
+    Mesh cc = mesh;
+    S::catmull_clark_subdivision(cc);
+    EXPECT_EQ(num_vertices(cc), num_vertices(mesh) + num_edges(mesh) + num_faces(mesh)) << name;
+    EXPECT_EQ(num_faces(cc), corner_count(mesh)) << name;
+    EXPECT_EQ(euler_characteristic(cc), euler_characteristic(mesh)) << name;
+    for(auto f : faces(cc))
+      EXPECT_EQ(degree(f, cc), 4u);
+
+    Mesh ds = mesh;
+    S::doo_sabin_subdivision(ds);
+    EXPECT_TRUE(ds.is_valid(false)) << name;
+    EXPECT_EQ(num_vertices(ds), corner_count(mesh)) << name;
+    EXPECT_EQ(euler_characteristic(ds), euler_characteristic(mesh)) << name;
+    std::size_t interior_edges = 0, interior_vertices = 0, closed_border_vertices = 0;
+    for(auto e : edges(mesh))
+      interior_edges += CGAL::is_border(e, mesh) ? 0 : 1;
+    for(auto v : vertices(mesh)) {
+      const bool border = bool(CGAL::is_border(v, mesh));
+      interior_vertices += border ? 0 : 1;
+      closed_border_vertices += (border && degree(v, mesh) >= 4) ? 1 : 0; // 3 or more faces
+    }
+    EXPECT_EQ(num_faces(ds), num_faces(mesh) + interior_edges + interior_vertices + closed_border_vertices) << name;
+  }
+}
+
+namespace {
+
+PX transform(const PX& p)
+{
+  return PX(FX(2) * p.x() - p.y() / FX(3) + p.z() + FX(1) / FX(7), p.x() / FX(5) + FX(3) * p.y() - FX(2),
+            -p.x() + p.y() / FX(2) + FX(4) * p.z() / FX(3) + FX(5));
+}
+
+template <class Subdivide>
+void expect_affine_invariant(const Exact_mesh& mesh, const Subdivide& subdivide, const std::string& what)
+{
+  Exact_mesh first_moved = mesh, first_refined = mesh;
+  for(auto v : vertices(first_moved))
+    first_moved.point(v) = transform(first_moved.point(v));
+  subdivide(first_moved);
+  subdivide(first_refined);
+  ASSERT_EQ(num_vertices(first_moved), num_vertices(first_refined));
+  for(auto v : vertices(first_refined))
+    ASSERT_EQ(first_moved.point(v), transform(first_refined.point(v))) << what << ", vertex " << v.idx();
+}
+
+} // namespace
+
+TEST(QuadSchemes, exact_affine_invariance)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/mpi.off", "cgal/double-torus-3-holes.off"}) {
+    const Exact_mesh mesh = to_exact(read_mesh(name));
+    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::catmull_clark_subdivision(m); }, name + " Catmull-Clark");
+    // Doo-Sabin, also over mpi.off's faces of 5 to 10 corners, whose weights are rounded
+    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::doo_sabin_subdivision(m); }, name + " Doo-Sabin");
+    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::linear_quad_subdivision(m); }, name + " linear");
+  }
+}
+
+TEST(QuadSchemes, a_planar_mesh_stays_planar_exactly)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  // mpi.off's and a holed torus' connectivity, flattened onto 3z = x + 2y + 3
+  for(const std::string name : {"cgal/mpi.off", "cgal/double-torus-3-holes.off"}) {
+    Exact_mesh flat = to_exact(read_mesh(name));
+    for(auto v : vertices(flat)) {
+      const PX p = flat.point(v);
+      flat.point(v) = PX(p.x(), p.y(), (p.x() + FX(2) * p.y() + FX(3)) / FX(3));
+    }
+    const auto on_plane = [](const Exact_mesh& m) {
+      for(auto v : vertices(m))
+        if(FX(3) * m.point(v).z() != m.point(v).x() + FX(2) * m.point(v).y() + FX(3))
+          return false;
+      return true;
+    };
+    Exact_mesh cc = flat, ds = flat, linear = flat;
+    S::catmull_clark_subdivision(cc, CGAL::parameters::number_of_iterations(2));
+    S::doo_sabin_subdivision(ds, CGAL::parameters::number_of_iterations(2));
+    S::linear_quad_subdivision(linear);
+    EXPECT_TRUE(on_plane(cc)) << name;
+    EXPECT_TRUE(on_plane(ds)) << name;
+    EXPECT_TRUE(on_plane(linear)) << name;
+  }
+}
+
+TEST(LinearQuad, points_are_the_old_vertices_edge_midpoints_and_face_centroids)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  const Exact_mesh mesh = to_exact(read_mesh("cgal/P.off"));
+  std::set<PX> expected;
+  for(auto v : vertices(mesh))
+    expected.insert(mesh.point(v));
+  for(auto e : edges(mesh))
+    expected.insert(CGAL::midpoint(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  for(auto f : faces(mesh)) {
+    KX::Vector_3 sum = CGAL::NULL_VECTOR;
+    int size = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      sum = sum + (mesh.point(v) - CGAL::ORIGIN);
+      ++size;
+    }
+    expected.insert(CGAL::ORIGIN + sum / FX(size));
+  }
+  Exact_mesh linear = mesh;
+  S::linear_quad_subdivision(linear);
+  std::set<PX> got;
+  for(auto v : vertices(linear))
+    got.insert(linear.point(v));
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(num_vertices(linear), num_vertices(mesh) + num_edges(mesh) + num_faces(mesh));
+}
+
+// ---------------------------------------------------------------------------
+// Borders
+
+// Doo-Sabin's border: the new border polygon is Chaikin's refinement of the
+// old one (points 3/4 u + 1/4 v and 1/4 u + 3/4 v on every border edge (u, v)),
+// except that a vertex with a single face stays and takes the place of both
+// its Chaikin points. Checked exactly, edge by edge.
+TEST(DooSabin, border_is_chaikins_refinement_of_the_border_polygon)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  using Edge = std::pair<PX, PX>;
+  const auto edge_of = [](const PX& a, const PX& b) { return a < b ? Edge(a, b) : Edge(b, a); };
+  for(const std::string name : {"opensubdiv/catmark_tent.obj", "cgal/double-torus-3-holes.off",
+                                "cgal/corner_with_hole.off", "cgal/mesh_with_colors.off"}) {
+    const Exact_mesh mesh = to_exact(read_mesh(name));
+    const auto corner = [&](VX v) { return degree(v, mesh) == 2; };
+    const auto near = [&](VX u, VX v) -> PX { // the Chaikin point of (u, v) near u
+      if(corner(u))
+        return mesh.point(u);
+      return CGAL::barycenter(mesh.point(u), FX(3) / FX(4), mesh.point(v), FX(1) / FX(4));
+    };
+    std::set<Edge> expected;
+    for(auto h : halfedges(mesh)) {
+      if(!CGAL::is_border(h, mesh))
+        continue;
+      const VX u = source(h, mesh), v = target(h, mesh), w = target(next(h, mesh), mesh);
+      expected.insert(edge_of(near(u, v), near(v, u)));
+      if(!corner(v))
+        expected.insert(edge_of(near(v, u), near(v, w)));
+    }
+    Exact_mesh refined = mesh;
+    S::doo_sabin_subdivision(refined);
+    std::set<Edge> got;
+    for(auto h : halfedges(refined))
+      if(CGAL::is_border(h, refined))
+        got.insert(edge_of(refined.point(source(h, refined)), refined.point(target(h, refined))));
+    EXPECT_EQ(got.size(), expected.size()) << name;
+    EXPECT_TRUE(got == expected) << name;
+    // and the corners stay at every level
+    S::doo_sabin_subdivision(refined);
+    std::set<PX> points;
+    for(auto v : vertices(refined))
+      points.insert(refined.point(v));
+    for(auto v : vertices(mesh))
+      if(CGAL::is_border(v, mesh) && corner(v))
+        EXPECT_EQ(points.count(mesh.point(v)), 1u) << name;
+  }
+}
+
+// Catmull-Clark's border: the new border polygon is the cubic B-spline
+// refinement of the old one (midpoints, and 1/8, 6/8, 1/8 at the vertices).
+TEST(CatmullClark, border_is_the_cubic_bspline_refinement_of_the_border_polygon)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"opensubdiv/catmark_tent.obj", "cgal/double-torus-3-holes.off"}) {
+    const Exact_mesh mesh = to_exact(read_mesh(name));
+    std::set<PX> expected;
+    for(auto h : halfedges(mesh)) {
+      if(!CGAL::is_border(h, mesh))
+        continue;
+      const PX& u = mesh.point(source(h, mesh));
+      const PX& v = mesh.point(target(h, mesh));
+      const PX& w = mesh.point(target(next(h, mesh), mesh));
+      expected.insert(CGAL::midpoint(u, v));
+      expected.insert(CGAL::barycenter(u, FX(1) / FX(8), v, FX(6) / FX(8), w, FX(1) / FX(8)));
+    }
+    Exact_mesh refined = mesh;
+    S::catmull_clark_subdivision(refined);
+    std::set<PX> got;
+    for(auto v : vertices(refined))
+      if(CGAL::is_border(v, refined))
+        got.insert(refined.point(v));
+    EXPECT_TRUE(got == expected) << name;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Other mesh types
+
+TEST(QuadSchemes, polyhedron_3_gives_the_surface_mesh_results)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/double-torus-3-holes.off", "cgal/mpi.off"}) {
+    CGAL::Polyhedron_3<K> poly_cc, poly_ds;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), poly_cc));
+    poly_ds = poly_cc;
+    Mesh sm_cc = read_mesh(name), sm_ds = sm_cc;
+    S::catmull_clark_subdivision(poly_cc, CGAL::parameters::number_of_iterations(2));
+    S::catmull_clark_subdivision(sm_cc, CGAL::parameters::number_of_iterations(2));
+    S::doo_sabin_subdivision(poly_ds, CGAL::parameters::number_of_iterations(2));
+    S::doo_sabin_subdivision(sm_ds, CGAL::parameters::number_of_iterations(2));
+    EXPECT_TRUE(poly_cc.is_valid() && poly_ds.is_valid()) << name;
+    EXPECT_EQ(num_vertices(poly_cc), num_vertices(sm_cc)) << name;
+    EXPECT_EQ(num_faces(poly_cc), num_faces(sm_cc)) << name;
+    EXPECT_EQ(num_vertices(poly_ds), num_vertices(sm_ds)) << name;
+    EXPECT_EQ(num_faces(poly_ds), num_faces(sm_ds)) << name;
+    EXPECT_LT(position_mismatch(poly_cc, sm_cc), 1e-14) << name;
+    EXPECT_LT(position_mismatch(poly_ds, sm_ds), 1e-14) << name;
+  }
+}
+
+TEST(QuadSchemes, epeck_mesh_compiles_and_runs)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  using KE = CGAL::Exact_predicates_exact_constructions_kernel;
+  using EpeckMesh = CGAL::Surface_mesh<KE::Point_3>;
+  EpeckMesh cube;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/cube_quad.off"), cube));
+  EpeckMesh cc = cube, ds = cube, linear = cube;
+  S::catmull_clark_subdivision(cc, CGAL::parameters::number_of_iterations(2));
+  S::doo_sabin_subdivision(ds, CGAL::parameters::number_of_iterations(2));
+  S::linear_quad_subdivision(linear);
+  EXPECT_EQ(num_faces(cc), 96u);
+  EXPECT_EQ(num_vertices(ds), 96u);
+  EXPECT_EQ(num_faces(linear), 24u);
+  // a cube's Catmull-Clark points are symmetric: the centroid stays at the centre
+  KE::Vector_3 sum = CGAL::NULL_VECTOR;
+  for(auto v : vertices(cc))
+    sum = sum + (cc.point(v) - CGAL::ORIGIN);
+  KE::Vector_3 before = CGAL::NULL_VECTOR;
+  for(auto v : vertices(cube))
+    before = before + (cube.point(v) - CGAL::ORIGIN);
+  EXPECT_EQ(sum / KE::FT(num_vertices(cc)), before / KE::FT(num_vertices(cube)));
+}
+
+// ---------------------------------------------------------------------------
+// Bad input (the checks are shared; this shows Catmull-Clark and Doo-Sabin use them)
+
+TEST(QuadSchemes, bad_input_is_refused_and_the_mesh_is_unchanged)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh empty;
+  const std::string empty_message = testing_utils::bad_input_message([&] { S::catmull_clark_subdivision(empty); });
+  EXPECT_NE(empty_message.find("Catmull-Clark: the mesh is empty"), std::string::npos) << empty_message;
+
+  Mesh isolated = read_mesh("cgal/cube_quad.off");
+  isolated.add_vertex(K::Point_3(5, 5, 5));
+  const Mesh copy = isolated;
+  const std::string isolated_message =
+    testing_utils::bad_input_message([&] { S::catmull_clark_subdivision(isolated); });
+  EXPECT_NE(isolated_message.find("vertex 8 is isolated"), std::string::npos) << isolated_message;
+  EXPECT_EQ(num_faces(isolated), 6u);
+  EXPECT_EQ(num_vertices(isolated), 9u);
+  EXPECT_LT(position_mismatch(isolated, copy), 1e-300);
+
+  const std::string doo_sabin_message =
+    testing_utils::bad_input_message([&] { S::doo_sabin_subdivision(isolated); });
+  EXPECT_NE(doo_sabin_message.find("Doo-Sabin: vertex 8 is isolated"), std::string::npos) << doo_sabin_message;
+  EXPECT_EQ(num_faces(isolated), 6u);
+}
