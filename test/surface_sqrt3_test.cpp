@@ -1,0 +1,568 @@
+// sqrt3 subdivision (Kobbelt) and interpolating sqrt3 (Labsik-Greiner):
+// agreement with CGAL's Sqrt3_subdivision, the border phase across calls,
+// exact weights, polynomial precision, bad input.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "mesh_test_utils.h"
+
+#include <algorithm>
+#include <complex>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace S = CGAL::Subdiv;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using FT = KE::FT;
+using PE = KE::Point_3;
+using Exact_mesh = CGAL::Surface_mesh<PE>;
+
+using testing_utils::position_mismatch;
+using testing_utils::shared_mesh;
+
+namespace {
+
+template <class M>
+M read(const std::string& name)
+{
+  M mesh;
+  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), mesh)) << name;
+  return mesh;
+}
+
+std::size_t border_edges(const Mesh& mesh)
+{
+  std::size_t count = 0;
+  for(auto e : edges(mesh))
+    count += mesh.is_border(e);
+  return count;
+}
+
+template <class M>
+std::vector<typename M::Point> points_of(const M& mesh)
+{
+  std::vector<typename M::Point> points;
+  for(auto v : vertices(mesh))
+    points.push_back(mesh.point(v));
+  return points;
+}
+
+// same points in the same order, same faces
+template <class M>
+bool same_mesh(const M& a, const M& b)
+{
+  if(points_of(a) != points_of(b) || num_faces(a) != num_faces(b))
+    return false;
+  for(auto f : faces(a)) {
+    std::vector<std::size_t> fa, fb;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a))
+      fa.push_back(v.idx());
+    for(auto v : CGAL::vertices_around_face(halfedge(f, b), b))
+      fb.push_back(v.idx());
+    if(fa != fb)
+      return false;
+  }
+  return true;
+}
+
+// a regular triangulated N x N grid in lattice coordinates (an affine image
+// of the equilateral lattice: every interior vertex has valence 6), z = f(x, y)
+template <class F>
+Exact_mesh regular_grid(int n, const F& f)
+{
+  Exact_mesh mesh;
+  std::vector<Exact_mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      v.push_back(mesh.add_vertex(PE(i, j, f(FT(i), FT(j)))));
+  const auto at = [&](int i, int j) { return v[j * (n + 1) + i]; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i, j + 1));
+      mesh.add_face(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+FT cubic(const FT& x, const FT& y)
+{
+  return x * x * x - FT(2) * x * x * y + FT(3) * x * y * y - y * y * y + FT(5) * x * y - x + FT(7);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// Kobbelt's sqrt3 against CGAL's Subdivision_method_3
+
+TEST(Sqrt3, matches_cgal_on_closed_meshes_at_levels_1_to_3)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/tetrahedron.off", "cgal/icosahedron.off", "cgal/elephant.off"})
+    for(int levels = 1; levels <= 3; ++levels) {
+      Mesh ours = read<Mesh>(name), theirs = ours;
+      const std::size_t v = num_vertices(ours), f = num_faces(ours);
+      S::sqrt3_subdivision(ours, CGAL::parameters::number_of_iterations(levels));
+      CGAL::Subdivision_method_3::Sqrt3_subdivision(theirs, CGAL::parameters::number_of_iterations(levels));
+      ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name << " " << levels;
+      ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name << " " << levels;
+      EXPECT_TRUE(ours.is_valid(false));
+      const double mismatch = position_mismatch(ours, theirs);
+      EXPECT_LT(mismatch, 1e-12) << name << " " << levels;
+      if(levels == 1) {
+        EXPECT_EQ(num_vertices(ours), v + f);
+        EXPECT_EQ(num_faces(ours), 3 * f);
+      }
+    }
+}
+
+// CGAL refines the border on the second, fourth, ... level of each call. One
+// call with k levels agrees with ours; but two calls of one level never
+// refine the border in CGAL (the border polygon stays the same), while ours
+// reads the phase from the mesh and refines it on the second call.
+TEST(Sqrt3, border_matches_cgal_within_one_call_and_differs_across_calls)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  const Mesh input = read<Mesh>("cgal/mesh_with_border.off");
+  const std::size_t b = border_edges(input);
+  ASSERT_GT(b, 0u);
+  for(int levels = 1; levels <= 4; ++levels) {
+    Mesh ours = input, theirs = input;
+    S::sqrt3_subdivision(ours, CGAL::parameters::number_of_iterations(levels));
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(theirs, CGAL::parameters::number_of_iterations(levels));
+    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << levels;
+    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << levels;
+    EXPECT_TRUE(ours.is_valid(false)) << levels;
+    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << levels;
+    // the border is split 1-to-3 every second level
+    EXPECT_EQ(border_edges(ours), b * (levels >= 4 ? 9 : levels >= 2 ? 3 : 1)) << levels;
+  }
+
+  Mesh ours = input, theirs = input, reference = input;
+  for(int call = 0; call < 2; ++call) {
+    S::sqrt3_subdivision(ours);
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(theirs, CGAL::parameters::number_of_iterations(1));
+  }
+  CGAL::Subdivision_method_3::Sqrt3_subdivision(reference, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(border_edges(theirs), b);         // CGAL: the border was never refined
+  EXPECT_EQ(border_edges(ours), 3 * b);       // ours: refined on the second call
+  EXPECT_EQ(num_vertices(ours), num_vertices(reference));
+  EXPECT_LT(position_mismatch(ours, reference), 1e-12);
+  EXPECT_NE(num_vertices(theirs), num_vertices(reference));
+}
+
+TEST(Sqrt3, the_host_reads_the_border_phase_from_the_mesh)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh mesh = read<Mesh>("cgal/mesh_with_border.off");
+  const Mesh closed = read<Mesh>("cgal/icosahedron.off");
+  EXPECT_FALSE(S::Sqrt3_split<Mesh>(closed).refines_border());
+  for(int level = 0; level < 5; ++level) {
+    EXPECT_EQ(S::Sqrt3_split<Mesh>(mesh).refines_border(), level % 2 == 1) << level;
+    S::sqrt3_subdivision(mesh);
+  }
+  // a single triangle: rested, then its three edges split in three
+  Mesh triangle;
+  triangle.add_face(triangle.add_vertex(K::Point_3(0, 0, 0)), triangle.add_vertex(K::Point_3(3, 0, 0)),
+                    triangle.add_vertex(K::Point_3(0, 3, 0)));
+  S::sqrt3_subdivision(triangle);
+  EXPECT_EQ(num_vertices(triangle), 4u);
+  EXPECT_EQ(border_edges(triangle), 3u);
+  S::sqrt3_subdivision(triangle);
+  EXPECT_EQ(num_vertices(triangle), 4u + 6u); // no face point in a border face, two points per border edge
+  EXPECT_EQ(num_faces(triangle), 9u);
+  EXPECT_EQ(border_edges(triangle), 9u);
+  EXPECT_TRUE(triangle.is_valid(false));
+  S::sqrt3_subdivision(triangle, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(num_faces(triangle), 81u);
+  EXPECT_EQ(border_edges(triangle), 27u);
+  EXPECT_TRUE(triangle.is_valid(false));
+}
+
+TEST(Sqrt3, one_call_of_two_levels_equals_two_calls_of_one_exactly)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/icosahedron.off", "cgal/hedra_open.off"}) {
+    const Exact_mesh input = read<Exact_mesh>(name);
+    Exact_mesh once = input, twice = input;
+    S::sqrt3_subdivision(once, CGAL::parameters::number_of_iterations(2));
+    S::sqrt3_subdivision(twice);
+    S::sqrt3_subdivision(twice);
+    EXPECT_TRUE(same_mesh(once, twice)) << name;
+    once = input;
+    twice = input;
+    S::interpolating_sqrt3_subdivision(once, CGAL::parameters::number_of_iterations(2));
+    S::interpolating_sqrt3_subdivision(twice);
+    S::interpolating_sqrt3_subdivision(twice);
+    EXPECT_TRUE(same_mesh(once, twice)) << name;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// weights
+
+TEST(Sqrt3, kobbelt_weights_are_rational_at_valences_3_4_6)
+{
+  using Mask = S::Sqrt3_mask<Exact_mesh>;
+  EXPECT_EQ(Mask::alpha(3), FT(5) / FT(9));
+  EXPECT_EQ(Mask::alpha(4), FT(4) / FT(9));
+  EXPECT_EQ(Mask::alpha(6), FT(1) / FT(3));
+  EXPECT_TRUE(Mask::is_exact(3) && Mask::is_exact(4) && Mask::is_exact(6));
+  EXPECT_FALSE(Mask::is_exact(5) || Mask::is_exact(7));
+  EXPECT_NEAR(CGAL::to_double(Mask::alpha(5)), (4 - 2 * std::cos(2 * CGAL_PI / 5)) / 9, 1e-16);
+  using IMask = S::Interpolating_sqrt3_mask<Exact_mesh>;
+  FT sum(0);
+  for(int j = 0; j < 6; ++j)
+    sum += IMask::ring_weight(6, j);
+  EXPECT_EQ(sum, FT(1) / FT(3));
+  EXPECT_EQ(IMask::ring_weight(6, 0), FT(5) / FT(18));
+  EXPECT_EQ(IMask::ring_weight(6, 2), FT(-1) / FT(18));
+}
+
+// every stencil of both schemes, on resting and refining steps, at valences
+// 3 to 9 and on borders, sums to exactly 1
+TEST(Sqrt3, stencils_sum_to_exactly_one)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  using vertex_descriptor = Exact_mesh::Vertex_index;
+  const auto check = [](const Exact_mesh& mesh, const auto& mask, const std::string& what) {
+    const S::Sqrt3_split<Exact_mesh> host(mesh);
+    std::size_t count = 0;
+    host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+      S::Stencil<vertex_descriptor, FT> stencil;
+      report(stencil);
+      EXPECT_EQ(stencil.weight_sum(), FT(1)) << what << " vertex " << j;
+      ++count;
+    });
+    EXPECT_EQ(count, host.number_of_new_vertices()) << what;
+  };
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/icosahedron.off", "cgal/tetrahedron.off",
+                                "cgal/open_cube.off"}) {
+    Exact_mesh mesh = read<Exact_mesh>(name);
+    for(int level = 0; level < 2; ++level) {
+      check(mesh, S::Sqrt3_mask<Exact_mesh>(), name + " Kobbelt level " + std::to_string(level));
+      check(mesh, S::Interpolating_sqrt3_mask<Exact_mesh>(),
+            name + " interpolating level " + std::to_string(level));
+      S::sqrt3_subdivision(mesh);
+    }
+  }
+}
+
+TEST(Sqrt3, kobbelt_vertex_and_border_stencils)
+{
+  // a fan of 4 triangles around an interior vertex of valence 4, then its
+  // border refined on the second step
+  Exact_mesh mesh;
+  const auto c = mesh.add_vertex(PE(0, 0, 1));
+  Exact_mesh::Vertex_index ring[4] = {mesh.add_vertex(PE(1, 0, 0)), mesh.add_vertex(PE(0, 1, 0)),
+                                      mesh.add_vertex(PE(-1, 0, 0)), mesh.add_vertex(PE(0, -1, 0))};
+  for(int i = 0; i < 4; ++i)
+    mesh.add_face(c, ring[i], ring[(i + 1) % 4]);
+  S::sqrt3_subdivision(mesh);
+  // centre: (1 - 4/9) c + 4/9 * mean(ring) = (0, 0, 5/9); border vertices kept
+  EXPECT_EQ(mesh.point(c), PE(0, 0, FT(5) / FT(9)));
+  EXPECT_EQ(mesh.point(ring[0]), PE(1, 0, 0));
+  // face point of (c, r0, r1): the centroid
+  EXPECT_EQ(mesh.point(Exact_mesh::Vertex_index(5)), PE(FT(1) / FT(3), FT(1) / FT(3), FT(1) / FT(3)));
+  ASSERT_TRUE(S::Sqrt3_split<Exact_mesh>(mesh).refines_border());
+  S::sqrt3_subdivision(mesh);
+  // border vertex r0 with border neighbours r3, r1: (4 r3 + 19 r0 + 4 r1) / 27
+  EXPECT_EQ(mesh.point(ring[0]), PE(FT(19) / FT(27), 0, 0));
+  // the border points of edge (r0, r1): (16 r0 + 10 r1 + r3) / 27 and its mirror
+  bool near_r0 = false, near_r1 = false;
+  for(auto v : vertices(mesh)) {
+    near_r0 = near_r0 || mesh.point(v) == PE(FT(16) / FT(27), FT(10 - 1) / FT(27), 0);
+    near_r1 = near_r1 || mesh.point(v) == PE(FT(10 - 1) / FT(27), FT(16) / FT(27), 0);
+  }
+  EXPECT_TRUE(near_r0 && near_r1);
+}
+
+// ---------------------------------------------------------------------------
+// exact properties
+
+TEST(Sqrt3, interpolating_keeps_old_vertices_exactly)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/icosahedron.off"}) {
+    Exact_mesh mesh = read<Exact_mesh>(name);
+    for(int level = 0; level < 2; ++level) {
+      const auto before = points_of(mesh);
+      S::interpolating_sqrt3_subdivision(mesh);
+      const auto after = points_of(mesh);
+      ASSERT_GT(after.size(), before.size());
+      EXPECT_TRUE(std::equal(before.begin(), before.end(), after.begin())) << name << " " << level;
+      EXPECT_TRUE(mesh.is_valid(false));
+    }
+  }
+}
+
+TEST(Sqrt3, planar_meshes_stay_in_their_plane_and_affine_maps_commute_exactly)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  // an affine map with rational coefficients
+  const auto map = [](const PE& p) {
+    return PE(FT(2) * p.x() - p.y() + FT(1) / FT(3), p.x() + FT(3) * p.z() - FT(5),
+              FT(1) / FT(7) * p.y() + p.z() + FT(2));
+  };
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/icosahedron.off", "cgal/open_cube.off"})
+    for(int scheme = 0; scheme < 2; ++scheme) {
+      Exact_mesh plain = read<Exact_mesh>(name);
+      // flatten onto the plane z = x/2 - 3y + 1
+      for(auto v : vertices(plain)) {
+        const PE p = plain.point(v);
+        plain.point(v) = PE(p.x(), p.y(), p.x() / FT(2) - FT(3) * p.y() + FT(1));
+      }
+      Exact_mesh mapped = plain;
+      for(auto v : vertices(mapped))
+        mapped.point(v) = map(mapped.point(v));
+      const auto np = CGAL::parameters::number_of_iterations(2);
+      if(scheme == 0) {
+        S::sqrt3_subdivision(plain, np);
+        S::sqrt3_subdivision(mapped, np);
+      } else {
+        S::interpolating_sqrt3_subdivision(plain, np);
+        S::interpolating_sqrt3_subdivision(mapped, np);
+      }
+      for(auto v : vertices(plain)) {
+        const PE& p = plain.point(v);
+        EXPECT_EQ(p.z(), p.x() / FT(2) - FT(3) * p.y() + FT(1)) << name << " scheme " << scheme;
+        EXPECT_EQ(map(p), mapped.point(v)) << name << " scheme " << scheme;
+      }
+    }
+}
+
+TEST(Sqrt3, counts_and_euler_characteristic)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"cgal/elephant.off", "cgal/mesh_with_border.off", "cgal/open_cube.off"}) {
+    Mesh mesh = read<Mesh>(name);
+    for(int level = 0; level < 3; ++level) {
+      const std::size_t v = num_vertices(mesh), e = num_edges(mesh), f = num_faces(mesh), b = border_edges(mesh);
+      const bool refining = S::Sqrt3_split<Mesh>(mesh).refines_border();
+      S::sqrt3_subdivision(mesh);
+      EXPECT_EQ(num_faces(mesh), 3 * f);
+      EXPECT_EQ(num_vertices(mesh), v + f + (refining ? b : 0));
+      EXPECT_EQ(border_edges(mesh), refining ? 3 * b : b);
+      EXPECT_EQ(long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)), long(v) - long(e) + long(f))
+        << name << " " << level;
+      EXPECT_TRUE(mesh.is_valid(false));
+    }
+  }
+}
+
+// the regular 12-point stencil reproduces cubic polynomials; the border's
+// ternary four-point rule reproduces cubics along a straight border
+TEST(Sqrt3, interpolating_reproduces_cubics_on_a_regular_grid)
+{
+  const int n = 8;
+  Exact_mesh mesh = regular_grid(n, cubic);
+  const std::size_t old_count = num_vertices(mesh);
+  S::interpolating_sqrt3_subdivision(mesh);
+  std::size_t checked = 0;
+  for(auto v : vertices(mesh)) {
+    if(v.idx() < old_count)
+      continue;
+    const PE& p = mesh.point(v);
+    // face points of faces with three interior corners of valence 6 lie
+    // strictly inside [1, n-1]^2; there the rule is the 12-point stencil
+    if(p.x() > 1 && p.y() > 1 && p.x() < n - 1 && p.y() < n - 1) {
+      EXPECT_EQ(p.z(), cubic(p.x(), p.y())) << p;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 50u);
+  // second step: the border y = 0 is split by the ternary four-point rule
+  S::interpolating_sqrt3_subdivision(mesh);
+  checked = 0;
+  for(auto v : vertices(mesh)) {
+    const PE& p = mesh.point(v);
+    if(p.y() == 0 && p.x() > 1 && p.x() < n - 1) {
+      EXPECT_EQ(p.z(), cubic(p.x(), FT(0))) << p;
+      ++checked;
+    }
+  }
+  // old vertices x = 2 .. n-2, two points on each edge (x, x+1), x = 1 .. n-2
+  EXPECT_EQ(checked, std::size_t(3 * n - 7));
+}
+
+TEST(Sqrt3, interpolating_one_ring_rule_at_valence_6_is_quadratic_precise)
+{
+  // the one-ring rule at valence 6 (used next to irregular vertices), on a
+  // regular ring in lattice coordinates, gives the value of a quadratic at
+  // the face's centroid
+  using IMask = S::Interpolating_sqrt3_mask<Exact_mesh>;
+  // ring at lattice positions around the origin, the face between ring 5 and 0
+  const int ring[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
+  const auto quadratic = [](const FT& x, const FT& y) -> FT { return FT(3) * x * x - x * y + FT(2) * y * y + x - y + 1; };
+  for(int start = 0; start < 6; ++start) {
+    // face (origin, ring[start-1], ring[start]): centroid
+    const int a = (start + 5) % 6;
+    const FT cx = FT(ring[a][0] + ring[start][0]) / FT(3), cy = FT(ring[a][1] + ring[start][1]) / FT(3);
+    FT value = quadratic(0, 0), sum(0);
+    for(int j = 0; j < 6; ++j) {
+      const int* r = ring[(start + j) % 6];
+      const FT w = IMask::ring_weight(6, j);
+      sum += w;
+      value += w * (quadratic(r[0], r[1]) - quadratic(0, 0));
+    }
+    EXPECT_EQ(value, quadratic(cx, cy)) << start;
+  }
+}
+
+TEST(Sqrt3, interpolating_at_irregular_vertices_stays_close_to_a_sphere)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  // the icosahedron (valence 5 everywhere) on the unit sphere: the refined
+  // surface stays within a few percent of the sphere and is valid
+  Mesh mesh = read<Mesh>("cgal/icosahedron.off");
+  double radius = 0;
+  for(auto v : vertices(mesh))
+    radius = (std::max)(radius, std::sqrt(CGAL::squared_distance(mesh.point(v), K::Point_3(0, 0, 0))));
+  S::interpolating_sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(4));
+  EXPECT_EQ(num_faces(mesh), 20u * 81u);
+  for(auto v : vertices(mesh)) {
+    const double r = std::sqrt(CGAL::squared_distance(mesh.point(v), K::Point_3(0, 0, 0))) / radius;
+    EXPECT_GT(r, 0.85);
+    EXPECT_LT(r, 1.01);
+  }
+}
+
+// The one-ring rule near an irregular vertex v of valence n maps v's one-ring
+// to the next level's one-ring (the n face points around v) by itself. Its
+// eigenvalues are 1, then 1/sqrt(3) twice (the first harmonics, turned by
+// pi/n), then 1/3 (the mean, and the second harmonics for n > 4), then 0: the
+// necessary condition lambda1 = lambda2 > |lambda3| for tangent plane
+// continuity, with the characteristic map of the first harmonics.
+TEST(Sqrt3, interpolating_one_ring_rule_has_the_designed_spectrum)
+{
+  using IMask = S::Interpolating_sqrt3_mask<Mesh>;
+  for(int n = 3; n <= 12; ++n) {
+    Eigen::MatrixXd s = Eigen::MatrixXd::Zero(n + 1, n + 1);
+    s(0, 0) = 1; // v is kept
+    for(int j = 0; j < n; ++j) {
+      double sum = 0;
+      for(int l = 0; l < n; ++l) {
+        const double w = IMask::ring_weight(n, l);
+        s(1 + j, 1 + (j + l) % n) = w;
+        sum += w;
+      }
+      s(1 + j, 0) = 1 - sum;
+    }
+    const Eigen::VectorXcd values = s.eigenvalues();
+    std::vector<double> moduli;
+    for(int i = 0; i <= n; ++i)
+      moduli.push_back(std::abs(values[i]));
+    std::sort(moduli.rbegin(), moduli.rend());
+    EXPECT_NEAR(moduli[0], 1, 1e-12) << n;
+    EXPECT_NEAR(moduli[1], 1 / std::sqrt(3.0), 1e-12) << n;
+    EXPECT_NEAR(moduli[2], 1 / std::sqrt(3.0), 1e-12) << n;
+    EXPECT_NEAR(moduli[3], 1.0 / 3, 1e-12) << n;
+    for(int i = 4; i <= n; ++i)
+      EXPECT_LE(moduli[i], 1.0 / 3 + 1e-12) << n;
+  }
+}
+
+TEST(Sqrt3, carries_vertex_data_origins_and_face_data)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Exact_mesh mesh = read<Exact_mesh>("cgal/mesh_with_border.off");
+  auto height = mesh.add_property_map<Exact_mesh::Vertex_index, FT>("v:height", FT(0)).first;
+  auto label = mesh.add_property_map<Exact_mesh::Face_index, int>("f:label", -1).first;
+  const auto linear = [](const PE& p) -> FT { return FT(3) * p.x() - p.y() + FT(7) * p.z() + FT(2); };
+  for(auto v : vertices(mesh))
+    height[v] = linear(mesh.point(v));
+  int next_label = 0;
+  for(auto f : faces(mesh))
+    label[f] = next_label++;
+  const std::size_t v0 = num_vertices(mesh), f0 = num_faces(mesh);
+  std::size_t b0 = 0;
+  for(auto e : edges(mesh))
+    b0 += mesh.is_border(e);
+
+  std::vector<S::Vertex_origin> origins;
+  S::Carried_data<Exact_mesh> data;
+  data.vertex_map(height).face_map(label).origins(origins);
+  S::sqrt3_subdivision(mesh, S::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+
+  for(auto v : vertices(mesh))
+    EXPECT_EQ(height[v], linear(mesh.point(v)));
+  std::map<int, int> children;
+  for(auto f : faces(mesh))
+    ++children[label[f]];
+  ASSERT_EQ(children.size(), f0);
+  for(const auto& entry : children)
+    EXPECT_EQ(entry.second, 9);
+  // the second level refined the border: old vertices, face points of the
+  // faces without border edge, two vertices per border edge
+  const std::size_t v1 = v0 + f0, f1 = 3 * f0;
+  ASSERT_EQ(origins.size(), num_vertices(mesh));
+  ASSERT_EQ(origins.size(), v1 + f1 + b0);
+  std::map<S::Origin_kind, std::size_t> kinds;
+  for(const auto& origin : origins)
+    ++kinds[origin.kind];
+  EXPECT_EQ(kinds[S::Origin_kind::vertex], v1);
+  EXPECT_EQ(kinds[S::Origin_kind::face], f1 - b0);
+  EXPECT_EQ(kinds[S::Origin_kind::edge], 2 * b0);
+  EXPECT_EQ(origins[v1].kind, S::Origin_kind::face);
+  EXPECT_EQ(origins.back().kind, S::Origin_kind::edge);
+}
+
+// ---------------------------------------------------------------------------
+// mesh types and bad input
+
+TEST(Sqrt3, works_on_polyhedron_3_and_epeck)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  CGAL::Polyhedron_3<K> poly = read<CGAL::Polyhedron_3<K>>("cgal/mesh_with_border.off");
+  Mesh sm = read<Mesh>("cgal/mesh_with_border.off");
+  S::sqrt3_subdivision(poly);
+  S::sqrt3_subdivision(poly);
+  S::sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(2));
+  EXPECT_TRUE(poly.is_valid());
+  EXPECT_EQ(num_vertices(poly), num_vertices(sm));
+  EXPECT_EQ(num_faces(poly), num_faces(sm));
+  EXPECT_LT(position_mismatch(poly, sm), 1e-14);
+
+  CGAL::Polyhedron_3<K> ipoly = read<CGAL::Polyhedron_3<K>>("cgal/mesh_with_border.off");
+  Mesh ism = read<Mesh>("cgal/mesh_with_border.off");
+  S::interpolating_sqrt3_subdivision(ipoly, CGAL::parameters::number_of_iterations(2));
+  S::interpolating_sqrt3_subdivision(ism, CGAL::parameters::number_of_iterations(2));
+  EXPECT_LT(position_mismatch(ipoly, ism), 1e-14);
+
+  using KK = CGAL::Exact_predicates_exact_constructions_kernel;
+  CGAL::Surface_mesh<KK::Point_3> epeck = read<CGAL::Surface_mesh<KK::Point_3>>("cgal/tetrahedron.off");
+  S::sqrt3_subdivision(epeck, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(num_faces(epeck), 36u);
+  S::interpolating_sqrt3_subdivision(epeck);
+  EXPECT_EQ(num_faces(epeck), 108u);
+}
+
+TEST(Sqrt3, a_quad_mesh_is_refused_and_left_unchanged)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  Mesh quad = read<Mesh>("cgal/cube_quad.off");
+  const auto before = points_of(quad);
+  for(int scheme = 0; scheme < 2; ++scheme) {
+    const std::string message = testing_utils::bad_input_message([&] {
+      if(scheme == 0)
+        S::sqrt3_subdivision(quad);
+      else
+        S::interpolating_sqrt3_subdivision(quad);
+    });
+    EXPECT_NE(message.find("sqrt3"), std::string::npos) << message;
+    EXPECT_NE(message.find("faces all have 3 vertices; face 0 has 4"), std::string::npos) << message;
+    EXPECT_EQ(num_faces(quad), 6u);
+    EXPECT_EQ(points_of(quad), before);
+  }
+}
