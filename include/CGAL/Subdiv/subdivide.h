@@ -59,6 +59,18 @@ void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
     mesh.collect_garbage();
 }
 
+template <class Mesh>
+bool has_garbage(const Mesh&)
+{
+  return false;
+}
+
+template <class Point>
+bool has_garbage(const CGAL::Surface_mesh<Point>& mesh)
+{
+  return mesh.has_garbage();
+}
+
 /// one level: the host numbers the new vertices and makes the new faces, the
 /// mask gives every new vertex its weights
 template <class Mask, class Mesh, class VertexPointMap>
