@@ -363,15 +363,42 @@ TEST(QuadSplit, counts_and_euler_characteristic)
     EXPECT_TRUE(ds.is_valid(false)) << name;
     EXPECT_EQ(num_vertices(ds), corner_count(mesh)) << name;
     EXPECT_EQ(euler_characteristic(ds), euler_characteristic(mesh)) << name;
-    std::size_t interior_edges = 0, interior_vertices = 0, closed_border_vertices = 0;
+    std::size_t interior_edges = 0, vertex_faces = 0;
     for(auto e : edges(mesh))
       interior_edges += CGAL::is_border(e, mesh) ? 0 : 1;
-    for(auto v : vertices(mesh)) {
+    for(auto v : vertices(mesh)) { // interior vertices of valence >= 3, border vertices with >= 3 faces
       const bool border = bool(CGAL::is_border(v, mesh));
-      interior_vertices += border ? 0 : 1;
-      closed_border_vertices += (border && degree(v, mesh) >= 4) ? 1 : 0; // 3 or more faces
+      vertex_faces += degree(v, mesh) >= (border ? 4u : 3u) ? 1 : 0;
     }
-    EXPECT_EQ(num_faces(ds), num_faces(mesh) + interior_edges + interior_vertices + closed_border_vertices) << name;
+    EXPECT_EQ(num_faces(ds), num_faces(mesh) + interior_edges + vertex_faces) << name;
+  }
+}
+
+// Interior vertices of valence 2 (OpenSubdiv's val2 shapes): Doo-Sabin makes
+// no 2-gon there, the two edge quads share an edge; every scheme gives a
+// valid mesh with the same Euler characteristic.
+TEST(QuadSchemes, interior_valence_2_vertices)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const std::string name : {"opensubdiv/catmark_val2_interior.obj", "opensubdiv/catmark_val2_back2back.obj",
+                                "opensubdiv/catmark_val2_foldover.obj", "opensubdiv/catmark_gregory_test8.obj"}) {
+    const Mesh mesh = read_mesh(name);
+    std::size_t valence_2 = 0;
+    for(auto v : vertices(mesh))
+      valence_2 += (!CGAL::is_border(v, mesh) && degree(v, mesh) == 2) ? 1 : 0;
+    EXPECT_GT(valence_2, 0u) << name;
+    Mesh cc = mesh, ds = mesh;
+    S::catmull_clark_subdivision(cc, CGAL::parameters::number_of_iterations(2));
+    S::doo_sabin_subdivision(ds);
+    EXPECT_TRUE(cc.is_valid(false) && CGAL::is_valid_polygon_mesh(cc)) << name;
+    EXPECT_TRUE(ds.is_valid(false) && CGAL::is_valid_polygon_mesh(ds)) << name;
+    EXPECT_EQ(euler_characteristic(cc), euler_characteristic(mesh)) << name;
+    EXPECT_EQ(euler_characteristic(ds), euler_characteristic(mesh)) << name;
+    EXPECT_EQ(num_vertices(ds), corner_count(mesh)) << name;
+    for(auto f : faces(ds))
+      EXPECT_GE(degree(f, ds), 3u) << name;
+    S::doo_sabin_subdivision(ds); // no interior vertex of valence 2 is left
+    EXPECT_TRUE(ds.is_valid(false)) << name;
   }
 }
 

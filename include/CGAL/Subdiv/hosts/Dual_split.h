@@ -24,7 +24,8 @@ namespace Subdiv {
  * `face(h)` at `target(h)`) becomes a new vertex, and the new faces are
  * - one n-gon per old n-gon, through its corners (the "face face");
  * - one quad per interior edge, through the four corners at its two ends;
- * - one n-gon per interior vertex of valence n, through its corners;
+ * - one n-gon per interior vertex of valence n >= 3, through its corners (at
+ *   an interior vertex of valence 2 the two edge quads share one edge);
  * - one k-gon per border vertex with k >= 3 faces, through its corners.
  *
  * Border: a border edge gets no face (the face face beside it already has an
@@ -44,9 +45,10 @@ namespace Subdiv {
  * then the vertex faces in vertex order. Each face's parent is the old face
  * of its first corner.
  *
- * Counts: V' = C (the number of corners), E' = C + 2I + K, F' = F + I + V_i + K,
- * with I interior edges, V_i interior vertices and K border vertices with at
- * least 3 faces; the Euler characteristic is kept.
+ * Counts: V' = C (the number of corners), E' = C + 2I - V_2 + K,
+ * F' = F + I + V_i + K, with I interior edges, V_i interior vertices of
+ * valence at least 3, V_2 interior vertices of valence 2 and K border vertices
+ * with at least 3 faces; the Euler characteristic is kept.
  *
  * Mask used: `corner_node(mesh, h, acc)`.
  */
@@ -67,31 +69,45 @@ public:
     : m_mesh(mesh),
       m_number(mesh),
       m_corner(2 * num_edges(mesh), none),
-      m_interior(num_edges(mesh), none),
+      m_vertex_edge(2 * num_edges(mesh), none),
       m_corner_count(0),
       m_interior_count(0),
-      m_interior_vertex_count(0),
-      m_border_face_count(0)
+      m_edge_count(0),
+      m_vertex_face_count(0),
+      m_closing_count(0)
   {
     for(face_descriptor f : CGAL::faces(mesh))
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
         m_corner[m_number(h)] = static_cast<Index>(m_corner_count++);
-    for(auto e : edges(mesh))
-      if(!CGAL::is_border(e, mesh))
-        m_interior[m_number(e)] = static_cast<Index>(m_interior_count++);
+    m_edge_count = m_corner_count;
+    for(auto e : edges(mesh)) {
+      if(CGAL::is_border(e, mesh))
+        continue;
+      ++m_interior_count;
+      for(halfedge_descriptor h : {halfedge(e, mesh), opposite(halfedge(e, mesh), mesh)}) {
+        // at an interior vertex of valence 2, the vertex edges of its two
+        // incoming halfedges are one edge, in opposite directions
+        const halfedge_descriptor other = prev(opposite(h, mesh), mesh);
+        const Index other_edge = m_vertex_edge[m_number(other)];
+        if(prev(opposite(other, mesh), mesh) == h && other_edge != none)
+          m_vertex_edge[m_number(h)] = other_edge ^ 1;
+        else
+          m_vertex_edge[m_number(h)] = static_cast<Index>(2 * m_edge_count++);
+      }
+    }
     for(vertex_descriptor v : vertices(mesh)) {
-      const int k = faces_at_border_vertex(v);
-      if(k < 0)
-        ++m_interior_vertex_count;
-      else if(k >= 3)
-        ++m_border_face_count;
+      bool border = false;
+      if(faces_around(v, nullptr, &border) >= 3) {
+        ++m_vertex_face_count;
+        m_closing_count += border ? 1 : 0;
+      }
     }
   }
 
   std::size_t number_of_new_vertices() const { return m_corner_count; }
   std::size_t number_of_new_faces() const
   {
-    return num_faces(m_mesh) + m_interior_count + m_interior_vertex_count + m_border_face_count;
+    return num_faces(m_mesh) + m_interior_count + m_vertex_face_count;
   }
 
   Vertex_origin origin(std::size_t j) const { return {Origin_kind::corner, j}; }
@@ -110,17 +126,16 @@ public:
   /*
    * New edges: first one per corner, the edge of the face face along the
    * corner's halfedge h (from the corner at source(h) to the corner at
-   * target(h)); then two per interior edge e, in the order of the interior
-   * edges, one in the vertex face at each end (2i + 0 at the target of
-   * halfedge(e), 2i + 1 at its source), running from the corner of the face
-   * of the incoming halfedge to the corner of the face on the other side;
-   * then the closing edges of the border vertex faces, in vertex order.
+   * target(h)); then two per interior edge e, in edge order, one in the
+   * vertex face at each end (first at the target of halfedge(e), then at its
+   * source), running from the corner of the face of the incoming halfedge to
+   * the corner of the face on the other side (just one at an interior vertex
+   * of valence 2); then the closing edges of the border vertex faces, in
+   * vertex order.
    */
   internal::Face_soup faces() const
   {
-    const std::size_t vertex_edges = m_corner_count;
-    const std::size_t closing_edges = m_corner_count + 2 * m_interior_count;
-    internal::Face_soup soup(m_corner_count, closing_edges + m_border_face_count);
+    internal::Face_soup soup(m_corner_count, m_edge_count + m_closing_count);
     soup.reserve(number_of_new_faces(), 2 * m_corner_count + 4 * m_interior_count);
 
     // face faces
@@ -136,28 +151,26 @@ public:
         continue;
       const halfedge_descriptor h = halfedge(e, m_mesh), o = opposite(h, m_mesh);
       soup.corner(corner(h), 2 * corner(h) + 1);
-      soup.corner(corner(prev(h, m_mesh)), 2 * (vertex_edges + vertex_edge(o)) + 1);
+      soup.corner(corner(prev(h, m_mesh)), vertex_edge(o) ^ 1);
       soup.corner(corner(o), 2 * corner(o) + 1);
-      soup.corner(corner(prev(o, m_mesh)), 2 * (vertex_edges + vertex_edge(h)) + 1);
+      soup.corner(corner(prev(o, m_mesh)), vertex_edge(h) ^ 1);
       soup.close_face(m_number(face(h, m_mesh)));
     }
     // vertex faces: corners of the incoming halfedges h, h <- prev(opposite(h))
-    std::size_t closing = closing_edges;
+    std::size_t closing = m_edge_count;
     for(vertex_descriptor v : vertices(m_mesh)) {
       halfedge_descriptor first = halfedge(v, m_mesh);
-      const int k = faces_at_border_vertex(v, &first);
-      if(k >= 0 && k < 3)
+      bool border = false;
+      const int k = faces_around(v, &first, &border);
+      if(k < 3)
         continue;
       halfedge_descriptor h = first;
-      for(int i = 0;; ++i) {
-        if(k >= 0 && i == k - 1) { // last corner of a border vertex face
+      for(int i = 0; i < k; ++i) {
+        if(border && i == k - 1) // last corner of a border vertex face
           soup.corner(corner(h), 2 * closing++);
-          break;
-        }
-        soup.corner(corner(h), 2 * (vertex_edges + vertex_edge(h)));
+        else
+          soup.corner(corner(h), vertex_edge(h));
         h = prev(opposite(h, m_mesh), m_mesh);
-        if(k < 0 && h == first)
-          break;
       }
       soup.close_face(m_number(face(first, m_mesh)));
     }
@@ -170,17 +183,14 @@ private:
 
   std::size_t corner(halfedge_descriptor h) const { return m_corner[m_number(h)]; }
 
-  // the vertex-face edge at target(h) across the interior edge of h
-  std::size_t vertex_edge(halfedge_descriptor h) const
-  {
-    const std::size_t id = m_number(h);
-    return 2 * static_cast<std::size_t>(m_interior[id >> 1]) + (id & 1);
-  }
+  // the new halfedge id of the vertex-face edge at target(h) across the
+  // interior edge of h, from the corner of h to the corner of prev(opposite(h))
+  std::size_t vertex_edge(halfedge_descriptor h) const { return m_vertex_edge[m_number(h)]; }
 
-  // -1 for an interior vertex; for a border vertex, its number of faces, and
-  // in *first the incoming halfedge of its first face (the one after the
-  // border, in the order h <- prev(opposite(h)))
-  int faces_at_border_vertex(vertex_descriptor v, halfedge_descriptor* first = nullptr) const
+  // the number of faces around v; on the border, *first becomes the incoming
+  // halfedge of its first face (the one after the border, in the order
+  // h <- prev(opposite(h)))
+  int faces_around(vertex_descriptor v, halfedge_descriptor* first = nullptr, bool* border = nullptr) const
   {
     int k = 0;
     halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
@@ -190,21 +200,22 @@ private:
       else
         ++k;
     }
-    if(border_in == boost::graph_traits<Mesh>::null_halfedge())
-      return -1;
-    if(first)
+    if(border)
+      *border = border_in != boost::graph_traits<Mesh>::null_halfedge();
+    if(first && border_in != boost::graph_traits<Mesh>::null_halfedge())
       *first = prev(opposite(border_in, m_mesh), m_mesh);
     return k;
   }
 
   const Mesh& m_mesh;
   internal::Mesh_numbering<Mesh> m_number;
-  std::vector<Index> m_corner;   // by halfedge number: corner ordinal, or none on the border
-  std::vector<Index> m_interior; // by edge number: ordinal among interior edges, or none
+  std::vector<Index> m_corner;      // by halfedge number: corner ordinal, or none on the border
+  std::vector<Index> m_vertex_edge; // by halfedge number: see vertex_edge(), or none
   std::size_t m_corner_count;
   std::size_t m_interior_count;
-  std::size_t m_interior_vertex_count;
-  std::size_t m_border_face_count;
+  std::size_t m_edge_count;        // new edges but the closing ones
+  std::size_t m_vertex_face_count; // vertices with 3 or more faces
+  std::size_t m_closing_count;     // border vertices with 3 or more faces
 };
 
 } // namespace Subdiv
