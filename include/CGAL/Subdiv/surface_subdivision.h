@@ -94,6 +94,17 @@ void interpolating_sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& n
   subdivide(mesh, Interpolating_sqrt3_mask<PolygonMesh>(), np);
 }
 
+/// Linear refinement: positions unchanged, the 1-to-4 split on a triangle
+/// mesh and the quad split otherwise. \sa `linear_triangle_subdivision()`, `linear_quad_subdivision()`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+void linear_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  if(!faces(mesh).empty() && CGAL::is_triangle_mesh(mesh))
+    linear_triangle_subdivision(mesh, np);
+  else
+    linear_quad_subdivision(mesh, np);
+}
+
 } // namespace Subdiv
 } // namespace CGAL
 
