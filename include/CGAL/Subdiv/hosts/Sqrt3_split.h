@@ -28,11 +28,17 @@ namespace internal {
  *     a face point;
  *   - every triangle has at least one old vertex;
  *   - every face point has exactly three old neighbours (the corners of its
- *     old face), and there is one face point per three faces.
+ *     old face), and there is one face point per three faces;
+ *   - the elements are in the order a sqrt3 step gives them: with V and F
+ *     the numbers of vertices and faces, face i (in iteration order) has the
+ *     face point V - F/3 + i/3 (rounded down) among its corners.
  * Starting from the border vertices, these rules determine the split (a
  * breadth-first labelling); the mesh is "pending" when the labelling reaches
  * every vertex of every component with a border and satisfies all of them.
  * Components without border are ignored (their refinement has no phase).
+ * The order condition keeps meshes that merely have the shape of a resting
+ * step's output (CGAL's hedra_open.off, an octahedron without two faces, is
+ * one) from being taken for one.
  */
 template <class Mesh, class Numbering>
 bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
@@ -76,17 +82,28 @@ bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
         return false; // a triangle without old vertex
     }
   }
-  // every face of the labelled components is labelled and keeps the rules
+  // every face of the labelled components is labelled, keeps the rules, and
+  // has its face point where a sqrt3 step puts it
+  const std::size_t face_count = num_faces(mesh);
+  if(face_count % 3 != 0 || num_vertices(mesh) < face_count / 3)
+    return false;
+  const std::size_t first_face_point = num_vertices(mesh) - face_count / 3;
   std::size_t labelled_faces = 0, face_points = 0;
   for(auto f : faces(mesh)) {
     const halfedge_descriptor h = halfedge(f, mesh);
-    const char a = label[number(source(h, mesh))], b = label[number(target(h, mesh))],
-               c = label[number(target(next(h, mesh), mesh))];
+    const std::size_t corner[3] = {number(source(h, mesh)), number(target(h, mesh)),
+                                   number(target(next(h, mesh), mesh))};
+    const char a = label[corner[0]], b = label[corner[1]], c = label[corner[2]];
     if(a == unknown && b == unknown && c == unknown)
       continue;
     if(a == unknown || b == unknown || c == unknown)
       return false;
     if(a != old_vertex && b != old_vertex && c != old_vertex)
+      return false;
+    const std::size_t expected = first_face_point + number(f) / 3;
+    if(corner[0] != expected && corner[1] != expected && corner[2] != expected)
+      return false;
+    if(label[expected] != face_point)
       return false;
     ++labelled_faces;
   }
@@ -130,15 +147,18 @@ bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
  * that it does not depend on how the levels are split across calls: a step
  * refines the border exactly when the mesh is the output of a resting step
  * (see `internal::sqrt3_border_is_pending` for the test, which reads the
- * connectivity only). A mesh read from a file is thus rested first, as CGAL's
+ * connectivity and the order of the elements, as a resting step leaves them,
+ * and nothing else). A mesh read from a file is thus rested first, as CGAL's
  * `Sqrt3_subdivision` does on the first level of every call; after that the
  * steps alternate, and one call with two iterations gives the same mesh as
- * two calls with one. (CGAL's `Sqrt3_subdivision` restarts with a resting
- * step at every call, so one-level calls never refine the border.) A mesh
- * that happens to have the structure of a resting step's output (e.g. a fan
- * of three triangles around an interior vertex of valence 3) is taken as
- * such, and its border is refined on the first step. Closed meshes have no
- * phase and need nothing.
+ * two calls with one, also across a save and load that keep the order of the
+ * elements. (CGAL's `Sqrt3_subdivision` restarts with a resting step at
+ * every call, so one-level calls never refine the border.) If the elements
+ * of a resting step's output are reordered, the border simply rests once
+ * more. A mesh that has the connectivity and the element order of a resting
+ * step's output (e.g. three triangles around a valence-3 vertex that comes
+ * last) is taken as one, and its border is refined on the first step. Closed
+ * meshes have no phase and need nothing.
  *
  * Numbering of the new vertices: the old vertices first, in the mesh's
  * iteration order; then one face point per face, in face order (on a
