@@ -10,7 +10,7 @@ set(SUBDIV_CLI_POLYGON ${PROJECT_SOURCE_DIR}/doc/data/polygon.txt)
 # subdiv_cli_test(name ARGS arg... [CONTAINS line...] [RC n] [OUTPUT f] [POINTS n] ...)
 # see run_cli.cmake for the checks; @WORK@ is the test's own empty directory.
 function(subdiv_cli_test name)
-  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS FIRST_LINE LAST_LINE FILE FILE_REGEX TIMEOUT)
+  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES FIRST_LINE LAST_LINE FILE FILE_REGEX TIMEOUT)
   cmake_parse_arguments(T "" "${single}" "ARGS;CONTAINS" ${ARGN})
   list(JOIN T_ARGS "|" args)
   set(defs -DEXE=$<TARGET_FILE:cgal-subdiv> -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/${name} "-DARGS=${args}")
@@ -40,7 +40,7 @@ set(square ${SUBDIV_CLI_DIR}/square.txt)
 set(out -o @WORK@/out.txt)
 
 # --- help -------------------------------------------------------------------
-subdiv_cli_test(help ARGS --help STDOUT_REGEX "curve.*demo.*Exit status")
+subdiv_cli_test(help ARGS --help STDOUT_REGEX "curve.*surface.*demo.*Exit status")
 subdiv_cli_test(curve_help ARGS curve --help
   STDOUT_REGEX "--scheme.*--levels.*--tolerance.*--closed.*--degree.*--a A.*--w W.*--end-rule.*--exact.*--svg.*--report.*Exit status")
 subdiv_cli_test(demo_help ARGS demo --help STDOUT_REGEX "--output-dir.*index.md")
@@ -147,5 +147,103 @@ subdiv_cli_error(option_for_other_scheme 2 "--w applies to four-point only"
 subdiv_cli_error(levels_and_tolerance 2 "--levels or --tolerance, not both"
   ARGS curve ${square} ${out} --scheme bezier --levels 1 --tolerance 0.1)
 subdiv_cli_error(unknown_command 2 "unknown command 'surfce'" ARGS surfce ${square} ${out})
+
+# === cgal-subdiv surface =======================================================
+set(tetra ${SUBDIV_CLI_DIR}/tetra.off)
+set(cube ${SUBDIV_CLI_DIR}/cube.off)
+set(mesh_out -o @WORK@/out.off)
+
+# a test of a scheme the library does not offer yet is reported as skipped
+function(subdiv_surface_scheme_test name)
+  subdiv_cli_test(${name} ${ARGN})
+  set_tests_properties(cli_${name} PROPERTIES SKIP_REGULAR_EXPRESSION "SUBDIV_SCHEME_NOT_AVAILABLE")
+endfunction()
+
+subdiv_cli_test(surface_help ARGS surface --help
+  STDOUT_REGEX "--scheme.*triangle meshes only.*loop .*loop-warren.*sqrt3.*butterfly.*modified-butterfly.*interpolating-sqrt3.*any polygon mesh.*catmull-clark.*doo-sabin.*linear.*--levels.*--repair.*--verbose.*Exit status")
+
+# --- every scheme: V and F of the result (OFF header) ---------------------------
+# tetrahedron (4 V, 6 E, 4 F): 1-to-4 split V' = V + E, F' = 4F; sqrt3 V' = V + F, F' = 3F
+foreach(scheme loop loop-warren butterfly modified-butterfly linear)
+  subdiv_surface_scheme_test(surface_${scheme}_tetra ARGS surface ${tetra} ${mesh_out} --scheme ${scheme} --levels 2
+    OUTPUT @WORK@/out.off VERTICES 34 FACES 64
+    STDOUT_REGEX "^${scheme}, 2 levels: 4 V, 6 E, 4 F -> 34 V, 96 E, 64 F in [0-9.]+ s; wrote [^\n]*out.off\n$")
+endforeach()
+foreach(scheme sqrt3 interpolating-sqrt3)
+  subdiv_surface_scheme_test(surface_${scheme}_tetra ARGS surface ${tetra} ${mesh_out} --scheme ${scheme} --levels 2
+    OUTPUT @WORK@/out.off VERTICES 20 FACES 36 STDOUT_REGEX "-> 20 V, 54 E, 36 F")
+endforeach()
+# Catmull-Clark: V' = V + E + F, F' = sum of face sizes; Doo-Sabin: V' = sum of face sizes, F' = F + E + V
+subdiv_surface_scheme_test(surface_catmull_clark_tetra ARGS surface ${tetra} ${mesh_out} --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.off VERTICES 14 FACES 12)
+subdiv_surface_scheme_test(surface_catmull_clark_cube ARGS surface ${cube} ${mesh_out} --scheme catmull-clark --levels 2
+  OUTPUT @WORK@/out.off VERTICES 98 FACES 96)
+subdiv_surface_scheme_test(surface_doo_sabin_tetra ARGS surface ${tetra} ${mesh_out} --scheme doo-sabin --levels 1
+  OUTPUT @WORK@/out.off VERTICES 12 FACES 14)
+subdiv_surface_scheme_test(surface_doo_sabin_cube ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 2
+  OUTPUT @WORK@/out.off VERTICES 96 FACES 98)
+# linear on quads: the quad split
+subdiv_surface_scheme_test(surface_linear_cube ARGS surface ${cube} ${mesh_out} --scheme linear --levels 1
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24)
+subdiv_surface_scheme_test(surface_levels_zero ARGS surface ${cube} ${mesh_out} --scheme catmull-clark --levels 0
+  OUTPUT @WORK@/out.off VERTICES 8 FACES 6)
+
+# --- formats ---------------------------------------------------------------------
+subdiv_cli_test(surface_obj ARGS surface ${SUBDIV_CLI_DIR}/tetra.obj -o @WORK@/out.obj --scheme loop --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 10 FACES 16)
+subdiv_cli_test(surface_ply ARGS surface ${SUBDIV_CLI_DIR}/tetra.ply -o @WORK@/out.ply --scheme loop --levels 1
+  OUTPUT @WORK@/out.ply VERTICES 10 FACES 16)
+# STL: the shared corners of the facets become one vertex each
+subdiv_cli_test(surface_stl ARGS surface ${SUBDIV_CLI_DIR}/tetra.stl -o @WORK@/out.stl --scheme loop --levels 1
+  OUTPUT @WORK@/out.stl FACES 16 STDOUT_REGEX "4 V, 6 E, 4 F -> 10 V, 24 E, 16 F")
+subdiv_cli_test(surface_off_to_upper_case_obj ARGS surface ${tetra} -o @WORK@/out.OBJ --scheme loop --levels 1
+  OUTPUT @WORK@/out.OBJ VERTICES 10 FACES 16)
+# 17 significant digits: the double nearest 0.1 is written so that it reads back the same
+subdiv_cli_test(surface_full_precision ARGS surface ${SUBDIV_CLI_DIR}/tetra_decimal.off ${mesh_out} --scheme loop --levels 0
+  OUTPUT @WORK@/out.off CONTAINS "0.10000000000000001 0.20000000000000001 0.29999999999999999")
+subdiv_cli_test(surface_verbose ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 2 --verbose
+  OUTPUT @WORK@/out.off STDERR_REGEX "loop level 1 of 2: 10 V, 24 E, 16 F .*loop level 2 of 2: 34 V, 96 E, 64 F")
+subdiv_cli_test(surface_repair ARGS surface ${SUBDIV_CLI_DIR}/three_faces_on_an_edge.off ${mesh_out} --scheme loop --levels 1 --repair
+  OUTPUT @WORK@/out.off FACES 12 STDERR_REGEX "note: read .* as a repaired, oriented polygon soup")
+
+# --- bad input: one line on stderr, exit code, no output file --------------------
+function(subdiv_surface_error name rc regex)
+  subdiv_cli_test(${name} RC ${rc} STDERR_REGEX "^cgal-subdiv: error: .*${regex}" STDERR_LINES 1
+                  OUTPUT @WORK@/out.off ${ARGN})
+endfunction()
+subdiv_surface_error(surface_missing_file 1 "cannot read '[^']*missing.off': No such file"
+  ARGS surface missing.off ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_unknown_input_extension 2 "INPUT '[^']*square.txt': unknown format '.txt' \\(expected .off, .obj, .ply or .stl\\)"
+  ARGS surface ${square} ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_unknown_output_extension 2 "OUTPUT '[^']*out.vtk': unknown format '.vtk'"
+  ARGS surface ${tetra} -o @WORK@/out.vtk --scheme loop --levels 1)
+subdiv_surface_error(surface_garbage 1 "cannot read '[^']*garbage.off' as OFF"
+  ARGS surface ${SUBDIV_CLI_DIR}/garbage.off ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_not_obj 1 "cannot read '[^']*not_a_mesh.obj' as OBJ"
+  ARGS surface ${SUBDIV_CLI_DIR}/not_a_mesh.obj ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_non_manifold_edge 1
+  "'[^']*three_faces_on_an_edge.off' is not a manifold polygon mesh: the edge from \\(0 0 0\\) to \\(1 0 0\\) belongs to 3 faces \\(--repair"
+  ARGS surface ${SUBDIV_CLI_DIR}/three_faces_on_an_edge.off ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_non_manifold_vertex 1 "vertex 0 is non-manifold"
+  ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme loop --levels 1)
+subdiv_surface_error(surface_quads_for_loop 1 "Loop.* needs a mesh whose faces all have 3 vertices; face 0 has 4"
+  ARGS surface ${cube} ${mesh_out} --scheme loop --levels 1)
+foreach(scheme butterfly sqrt3)
+  subdiv_surface_error(surface_quads_for_${scheme} 1 "needs a mesh whose faces all have 3 vertices; face 0 has 4"
+    ARGS surface ${cube} ${mesh_out} --scheme ${scheme} --levels 1)
+  set_tests_properties(cli_surface_quads_for_${scheme} PROPERTIES SKIP_REGULAR_EXPRESSION "SUBDIV_SCHEME_NOT_AVAILABLE")
+endforeach()
+subdiv_surface_error(surface_negative_levels 1 "the number of levels must not be negative, got -1"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels -1)
+subdiv_surface_error(surface_huge_levels 1 "40 iterations on 4 faces would make more faces than fit in this machine's memory"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 40 TIMEOUT 10)
+subdiv_surface_error(surface_unknown_scheme 2 "unknown scheme 'chaikin' \\(expected loop, "
+  ARGS surface ${tetra} ${mesh_out} --scheme chaikin --levels 1)
+subdiv_surface_error(surface_missing_levels 2 "missing --levels" ARGS surface ${tetra} ${mesh_out} --scheme loop)
+subdiv_surface_error(surface_missing_output 2 "missing -o OUTPUT" ARGS surface ${tetra} --scheme loop --levels 1)
+subdiv_surface_error(surface_unknown_option 2 "unknown option '--closed'"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --closed)
+subdiv_surface_error(surface_unwritable_output 1 "cannot write '[^']*/no/such/dir/out.off'"
+  ARGS surface ${tetra} -o @WORK@/no/such/dir/out.off --scheme loop --levels 1)
 
 endif()

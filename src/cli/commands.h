@@ -12,6 +12,7 @@
 namespace cgal_subdiv {
 
 int curve_command(const std::vector<std::string>& args);
+int surface_command(const std::vector<std::string>& args);
 int demo_command(const std::vector<std::string>& args, const std::string& program_path);
 
 } // namespace cgal_subdiv

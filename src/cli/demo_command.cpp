@@ -9,6 +9,7 @@
 #include "files.h"
 #include "numbers.h"
 #include "report.h"
+#include "surface_demo.h"
 #include "svg.h"
 
 #include <CGAL/Subdiv/errors.h>
@@ -32,11 +33,17 @@ rules). For each run it writes to DIR:
   NAME.txt   the refined points (17 significant digits)
   NAME.svg   the figure: control polygon, levels, curvature against arc length
   NAME.md    the distance table and the eigen-analysis (as `curve --report`)
-and DIR/index.md, which lists them. A summary table goes to stdout.
+Then runs every surface scheme, 3 levels, on the bundled meshes torus.off (a
+closed triangle torus, 64 faces) and house.off (a closed mesh of 40 quads and 4
+triangles; the polygon schemes only) and writes
+  surface-SCHEME-MESH.off   the refined mesh
+DIR/index.md lists everything. Summary tables (for surfaces: vertices and
+faces in and out, time) go to stdout.
 
   --output-dir DIR   where to write (default: out), created if missing
   --input FILE       the polygon (default: the bundled doc/data/polygon.txt,
-                     from the source tree or <prefix>/share/cgal-subdiv/)
+                     from the source tree or <prefix>/share/cgal-subdiv/; the
+                     meshes are found in the same place)
   -h, --help         show this help
 
 Exit status: 0 on success, 1 if a run or a file failed, 2 for a malformed
@@ -113,22 +120,30 @@ Input_polyline bezier_subset(const Input_polyline& input, const Curve_job& job)
   return subset;
 }
 
-std::string find_polygon(const Parsed_args& args, const std::string& program_path)
+// a bundled file: in the source tree (run from the build tree), next to the
+// installed binary in ../share/cgal-subdiv/, or in the install prefix
+std::string find_bundled(const std::string& name, const std::string& program_path, const std::string& hint)
 {
-  if(args.has("--input"))
-    return args.value("--input");
   std::error_code ec;
   fs::path program = fs::canonical("/proc/self/exe", ec);
   if(ec)
     program = fs::absolute(program_path, ec);
   const std::vector<std::string> candidates = {
-    SUBDIV_SOURCE_POLYGON, (program.parent_path().parent_path() / SUBDIV_RELATIVE_SHARE_DIR / "polygon.txt").string(),
-    SUBDIV_INSTALL_POLYGON};
+    (fs::path(SUBDIV_SOURCE_DATA_DIR) / name).string(),
+    (program.parent_path().parent_path() / SUBDIV_RELATIVE_SHARE_DIR / name).string(),
+    (fs::path(SUBDIV_INSTALL_DATA_DIR) / name).string()};
   for(const std::string& candidate : candidates)
     if(fs::is_regular_file(candidate, ec))
       return candidate;
-  throw Input_error("cannot find the bundled polygon.txt (looked for " + candidates.front() + " and " +
-                    candidates.back() + "); give one with --input");
+  throw Input_error("cannot find the bundled " + name + " (looked for " + candidates.front() + " and " +
+                    candidates.back() + ")" + hint);
+}
+
+std::string find_polygon(const Parsed_args& args, const std::string& program_path)
+{
+  if(args.has("--input"))
+    return args.value("--input");
+  return find_bundled("polygon.txt", program_path, "; give one with --input");
 }
 
 struct Demo_row
@@ -177,7 +192,9 @@ std::string ratio_text(double x)
   return buffer;
 }
 
-void write_index(const std::vector<Demo_row>& rows, const std::string& polygon, const fs::path& dir)
+void write_index(const std::vector<Demo_row>& rows, const std::string& polygon,
+                 const std::vector<Surface_demo_row>& surface_rows, const std::vector<Demo_mesh>& meshes,
+                 const fs::path& dir)
 {
   Atomic_file index((dir / "index.md").string());
   std::ostream& out = index.stream();
@@ -197,6 +214,7 @@ void write_index(const std::vector<Demo_row>& rows, const std::string& polygon, 
         << r.name << ".md) |\n";
   }
   out << "\n";
+  write_surface_index(surface_rows, meshes, out);
   for(const Demo_row& r : rows)
     if(r.failure.empty())
       out << "## " << r.name << "\n\n![" << r.name << "](" << r.name << ".svg)\n\n";
@@ -242,12 +260,24 @@ int demo_command(const std::vector<std::string>& arguments, const std::string& p
     rows.push_back(run_case(c, input, dir));
     failures += rows.back().failure.empty() ? 0 : 1;
   }
-  write_index(rows, polygon, dir);
+  const std::vector<Demo_mesh> meshes = {
+    Demo_mesh{"torus", find_bundled("torus.off", program_path, ""), true},
+    Demo_mesh{"house", find_bundled("house.off", program_path, ""), false}};
+  const std::vector<Surface_demo_row> surface_rows = run_surface_demo(meshes, dir);
+  std::size_t surface_failures = 0;
+  for(const Surface_demo_row& r : surface_rows)
+    surface_failures += r.failure.empty() ? 0 : 1;
+
+  write_index(rows, polygon, surface_rows, meshes, dir);
   print_summary(rows);
-  std::cout << "\nwrote " << 3 * (rows.size() - failures) + 1 << " files; open " << (dir / "index.md").string()
-            << "\n" << fs::canonical(dir).string() << std::endl;
-  if(failures)
-    throw Input_error(std::to_string(failures) + " of " + std::to_string(rows.size()) + " demo runs failed");
+  std::cout << "\n";
+  print_surface_summary(surface_rows);
+  const std::size_t files = 3 * (rows.size() - failures) + (surface_rows.size() - surface_failures) + 1;
+  std::cout << "\nwrote " << files << " files; open " << (dir / "index.md").string() << "\n"
+            << fs::canonical(dir).string() << std::endl;
+  const std::size_t all_failures = failures + surface_failures, all_runs = rows.size() + surface_rows.size();
+  if(all_failures)
+    throw Input_error(std::to_string(all_failures) + " of " + std::to_string(all_runs) + " demo runs failed");
   return 0;
 }
 

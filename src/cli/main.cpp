@@ -17,14 +17,18 @@ namespace {
 
 const char* const main_help = R"(usage: cgal-subdiv COMMAND [OPTIONS]
 
-Subdivision curves with CGAL Subdiv.
+Subdivision curves and surfaces with CGAL Subdiv.
 
 Commands:
   curve    refine a polyline from a file with a curve scheme (bezier, bspline,
            chaikin, corner-cutting, four-point); optional SVG figure and
            convergence report
-  demo     run every curve scheme on the bundled polygon and write points,
-           figures, convergence tables and an index to a directory (out/)
+  surface  refine a polygon mesh (OFF, OBJ, PLY, STL) with a surface scheme
+           (loop, loop-warren, catmull-clark, doo-sabin, sqrt3, butterfly,
+           modified-butterfly, interpolating-sqrt3, linear)
+  demo     run every curve scheme on the bundled polygon and every surface
+           scheme on the bundled meshes; write points, meshes, figures,
+           convergence tables and an index to a directory (out/)
 
 Run 'cgal-subdiv COMMAND --help' for the options of a command.
 
@@ -56,9 +60,11 @@ int dispatch(const std::vector<std::string>& args, const std::string& program)
   }
   if(command == "curve")
     return cgal_subdiv::curve_command(rest);
+  if(command == "surface")
+    return cgal_subdiv::surface_command(rest);
   if(command == "demo")
     return cgal_subdiv::demo_command(rest, program);
-  throw cgal_subdiv::Usage_error("unknown command '" + command + "' (expected curve or demo; see 'cgal-subdiv --help')");
+  throw cgal_subdiv::Usage_error("unknown command '" + command + "' (expected curve, surface or demo; see 'cgal-subdiv --help')");
 }
 
 } // namespace

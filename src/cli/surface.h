@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// Surface meshes in cgal-subdiv: the table of surface schemes, reading and
+// writing OFF, OBJ, PLY and STL through CGAL::IO, and one timed run.
+#ifndef CGAL_SUBDIV_CLI_SURFACE_H
+#define CGAL_SUBDIV_CLI_SURFACE_H
+
+#include "common.h"
+
+#include <CGAL/Surface_mesh.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cgal_subdiv {
+
+using Surface = CGAL::Surface_mesh<Double_kernel::Point_3>;
+
+/// One surface scheme of `cgal-subdiv surface --scheme NAME`.
+struct Surface_scheme
+{
+  std::string name;        // the keyword, e.g. "catmull-clark"
+  std::string description; // one line for --help and the demo
+  /// refines `mesh` `levels` times; throws CGAL::Subdiv::Bad_input when the
+  /// scheme does not apply (the mesh is then unchanged)
+  std::function<void(Surface& mesh, int levels)> run;
+  /// refines triangle meshes only
+  bool triangles_only = true;
+  /// whether `run(m, a); run(m, b)` equals `run(m, a + b)`, so that a long run
+  /// can report its progress level by level
+  bool level_by_level = true;
+  /// factor by which the face count grows per level (for the size check
+  /// before any work; the library checks again)
+  double face_growth = 4;
+};
+
+/// every scheme this build offers, in the order of --help
+const std::vector<Surface_scheme>& surface_schemes();
+/// every scheme keyword the command knows, offered or not yet
+const std::vector<std::string>& surface_scheme_keywords();
+/// \throws Usage_error for an unknown keyword, Input_error for one that is not
+///         available in this build yet
+const Surface_scheme& find_surface_scheme(const std::string& name);
+
+/// "loop, loop-warren, ... or linear"
+std::string list_surface_schemes();
+
+enum class Mesh_format { off, obj, ply, stl };
+
+/// the format of `path` from its extension (any letter case);
+/// \throws Usage_error naming `role` ("INPUT", "OUTPUT") for any other extension
+Mesh_format mesh_format(const std::string& path, const std::string& role);
+
+struct Mesh_counts
+{
+  std::size_t vertices = 0, edges = 0, faces = 0;
+};
+Mesh_counts counts(const Surface& mesh);
+/// "8 V, 18 E, 12 F"
+std::string describe(const Mesh_counts& counts);
+
+/*
+ * reads `path` (format from the extension) with CGAL::IO::read_polygon_mesh.
+ * With `repair`, a file that is a polygon soup but not a manifold mesh is
+ * repaired and oriented (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh)
+ * and a note says so.
+ * \throws Input_error saying why the file cannot be used: missing, not
+ *         readable, not parsable, not a manifold polygon mesh (naming an edge
+ *         or a vertex), no faces
+ */
+Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes);
+
+/// writes `mesh` to `path` (format from the extension), ASCII, 17 significant
+/// digits, under a temporary name renamed at the end; \throws Input_error
+void write_surface(const Surface& mesh, const std::string& path);
+
+/// one line of progress: level (1-based), mesh after it, seconds since start
+using Level_callback = std::function<void(int level, const Mesh_counts& counts, double seconds)>;
+
+struct Surface_result
+{
+  Mesh_counts in, out;
+  double seconds = 0; // subdivision only, not reading or writing
+};
+
+/*
+ * refines `mesh` `levels` times with `scheme`. Checks first that the output
+ * fits in memory (negative levels and too large outputs are refused before any
+ * work). If `on_level` is set and the scheme allows it, runs level by level and
+ * calls it after each level.
+ * \throws CGAL::Subdiv::Bad_input when the scheme does not apply
+ */
+Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+                                 const Level_callback& on_level = Level_callback());
+
+} // namespace cgal_subdiv
+
+#endif // CGAL_SUBDIV_CLI_SURFACE_H

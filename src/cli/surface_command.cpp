@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// cgal-subdiv surface INPUT -o OUTPUT --scheme S --levels N [--repair] [--verbose]
+#include "args.h"
+#include "commands.h"
+#include "surface.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace cgal_subdiv {
+namespace {
+
+const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--repair] [--verbose]
+
+Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
+the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
+and faces (F) before and after, and the time the subdivision took (reading and
+writing not included).
+
+  INPUT                 OFF, OBJ, PLY or STL (from the extension, any letter
+                        case), read with CGAL::IO::read_polygon_mesh into a
+                        Surface_mesh<Simple_cartesian<double>::Point_3>. It must
+                        be a manifold polygon mesh (borders allowed); if it is
+                        not, the error names the edge or vertex at fault.
+                        Colours, normals and other properties are ignored.
+  -o, --output OUTPUT   OFF, OBJ, PLY or STL (from the extension), ASCII, 17
+                        significant digits; STL holds triangles, so other faces
+                        are split into triangles there. Written to a temporary
+                        file and renamed at the end: a failed run leaves no
+                        OUTPUT behind.
+  --scheme SCHEME       the scheme:
+)";
+
+const char* const surface_help_tail = R"(  --levels N            number of refinement levels (N >= 0)
+  --repair              read INPUT as a polygon soup, repair and orient it
+                        (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh):
+                        for files that are not manifold meshes as they stand
+  -v, --verbose         a line on stderr per level (V, E, F, time); without it,
+                        such lines appear on runs whose output exceeds a
+                        million faces, once the run has taken a second
+  -h, --help            show this help
+
+Exit status: 0 on success; 1 if the input cannot be used (file missing,
+unreadable or not parsable, not a manifold polygon mesh, a mesh the scheme does
+not apply to, e.g. a quad for loop, negative levels, an output that would not
+fit in memory); 2 for a malformed command line (unknown option or scheme, an
+extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
+--levels). Errors are one line on stderr: "cgal-subdiv: error: ...".
+)";
+
+const std::vector<Option_spec> surface_options = {{{"-o", "--output"}, true}, {{"--scheme"}, true},
+                                                  {{"--levels"}, true},       {{"--repair"}, false},
+                                                  {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}};
+
+// "  name   description" with the description wrapped at 80 columns
+std::string scheme_help_line(const std::string& name, const std::string& description)
+{
+  const std::size_t indent = 47, width = 80;
+  std::string text = std::string(26, ' ') + name;
+  text.resize(std::max(text.size() + 1, indent), ' ');
+  std::size_t column = text.size();
+  std::istringstream words(description);
+  bool first = true;
+  for(std::string word; words >> word; first = false) {
+    if(!first && column + 1 + word.size() > width) {
+      text += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if(!first) {
+      text += ' ';
+      ++column;
+    }
+    text += word;
+    column += word.size();
+  }
+  return text + "\n";
+}
+
+std::string surface_help()
+{
+  std::string help = surface_help_head;
+  for(const bool triangles : {true, false}) {
+    help += triangles ? "                        triangle meshes only:\n" : "                        any polygon mesh:\n";
+    for(const std::string& name : surface_scheme_keywords()) {
+      const Surface_scheme* scheme = nullptr;
+      for(const Surface_scheme& s : surface_schemes())
+        if(s.name == name)
+          scheme = &s;
+      if(scheme ? scheme->triangles_only == triangles : triangles)
+        help += scheme_help_line(name, scheme ? scheme->description : "(not yet available in this build)");
+    }
+  }
+  return help + surface_help_tail;
+}
+
+std::string seconds_text(double s)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f s", s);
+  return buffer;
+}
+
+} // namespace
+
+int surface_command(const std::vector<std::string>& arguments)
+{
+  const Parsed_args args = scan_args(arguments, surface_options, "surface");
+  if(args.has("-h")) {
+    std::cout << surface_help();
+    return 0;
+  }
+  if(args.positional.empty())
+    throw Usage_error("missing INPUT; see 'cgal-subdiv surface --help'");
+  if(args.positional.size() > 1)
+    throw Usage_error("unexpected argument '" + args.positional[1] + "' (only one INPUT)");
+  if(!args.has("-o") || args.value("-o").empty())
+    throw Usage_error("missing -o OUTPUT");
+  if(!args.has("--scheme"))
+    throw Usage_error("missing --scheme (" + list_surface_schemes() + ")");
+  if(!args.has("--levels"))
+    throw Usage_error("missing --levels N");
+  const std::string input = args.positional.front();
+  const std::string output = args.value("-o");
+  mesh_format(input, "INPUT");
+  mesh_format(output, "OUTPUT");
+  const int levels = args.integer("--levels", 0);
+  if(levels < 0)
+    throw Input_error("the number of levels must not be negative, got " + std::to_string(levels));
+  const Surface_scheme& scheme = find_surface_scheme(args.value("--scheme"));
+  const bool verbose = args.has("-v");
+
+  std::vector<std::string> notes;
+  Surface mesh = read_surface(input, args.has("--repair"), notes);
+  // progress: every level with --verbose, otherwise once the run is long
+  bool talking = verbose;
+  const Level_callback progress = [&](int level, const Mesh_counts& c, double seconds) {
+    talking = talking || seconds >= 1.0;
+    if(talking)
+      std::cerr << "cgal-subdiv: " << scheme.name << " level " << level << " of " << levels << ": " << describe(c)
+                << " (" << seconds_text(seconds) << ")" << std::endl;
+  };
+  // level by level (a library call each, each checking its input) only when
+  // asked or when the run is long enough for progress to matter
+  double predicted_faces = static_cast<double>(mesh.number_of_faces());
+  for(int level = 0; level < levels; ++level)
+    predicted_faces *= scheme.face_growth;
+  const bool by_level = verbose || predicted_faces >= 1e6;
+  const Surface_result result = subdivide_surface(mesh, scheme, levels, by_level ? progress : Level_callback());
+  if(talking)
+    std::cerr << "cgal-subdiv: writing " << output << std::endl;
+  write_surface(mesh, output);
+
+  for(const std::string& note : notes)
+    std::cerr << "cgal-subdiv: note: " << note << '\n';
+  std::cout << scheme.name << ", " << levels << (levels == 1 ? " level: " : " levels: ") << describe(result.in)
+            << " -> " << describe(result.out) << " in " << seconds_text(result.seconds) << "; wrote " << output
+            << std::endl;
+  return 0;
+}
+
+} // namespace cgal_subdiv
