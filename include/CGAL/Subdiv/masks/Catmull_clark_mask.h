@@ -121,17 +121,28 @@ public:
 
 private:
   // adds s times the face point of face(h): s/|f| for each vertex of the face
+  // (one walk around faces of up to 8 corners, which are kept on the way)
   template <class Accumulator>
   static void add_face_point(const Mesh& mesh, halfedge_descriptor h, const FT& s, Accumulator& acc)
   {
+    constexpr int kept = 8;
+    vertex_descriptor corners[kept];
     int size = 0;
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, mesh)) {
-      (void)g;
+    halfedge_descriptor g = h;
+    do {
+      if(size < kept)
+        corners[size] = target(g, mesh);
       ++size;
-    }
+      g = next(g, mesh);
+    } while(g != h);
     const FT weight = s / FT(size);
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, mesh))
-      acc.add(target(g, mesh), weight);
+    if(size <= kept) {
+      for(int i = 0; i < size; ++i)
+        acc.add(corners[i], weight);
+      return;
+    }
+    for(halfedge_descriptor around : CGAL::halfedges_around_face(h, mesh))
+      acc.add(target(around, mesh), weight);
   }
 
   Border_corners m_corners;
