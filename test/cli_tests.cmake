@@ -98,9 +98,12 @@ subdiv_cli_test(report_cubic ARGS curve ${SUBDIV_CLI_POLYGON} ${out} --scheme bs
   STDOUT_REGEX "\\| 4 \\| 160 \\|.*eigenvalues[^\n]*: 1, 0.5 \\(1/2\\), 0.25 \\(1/4\\).*limit mask[^\n]*: 1/6, 2/3, 1/6.*C\\^2.*predicted rate[^\n]*0.25")
 subdiv_cli_test(report_bezier ARGS curve ${square} ${out} --scheme bezier --levels 3 --report
   OUTPUT @WORK@/out.txt POINTS 25 STDOUT_REGEX "\\| 3 \\| 25 \\|.*C\\^inf")
+# the demo: every curve scheme, then every surface scheme on the bundled torus (64 triangles)
+# and house (40 quads, 4 triangles); Catmull-Clark on the house: 44 -> 172 -> 688 -> 2752 faces
 subdiv_cli_test(demo ARGS demo --output-dir @WORK@/demo TIMEOUT 30
-  STDOUT_REGEX "bspline-5-closed.*four-point-w1_5-closed.*bezier-3-open.*/demo\n$"
-  FILE @WORK@/demo/index.md FILE_REGEX "chaikin-closed.svg")
+  STDOUT_REGEX "bspline-5-closed.*four-point-w1_5-closed.*bezier-3-open.*surface-loop-torus +loop +torus +3 +32 / 64 +2048 / 4096.*surface-interpolating-sqrt3-torus.*surface-catmull-clark-house +catmull-clark +house +3 +44 / 44 +2754 / 2752.*surface-linear-house.*/demo\n$"
+  FILE @WORK@/demo/index.md
+  FILE_REGEX "chaikin-closed.svg.*## Surfaces.*\\| surface-sqrt3-torus \\| sqrt3 \\| torus \\| 3 \\| 32 / 64 \\| 864 / 1728 \\|.*surface-doo-sabin-house.off")
 
 # --- bad input: one line on stderr, exit code, no output file ------------------
 subdiv_cli_error(missing_file 1 "cannot read '[^']*missing.txt': No such file"
