@@ -200,9 +200,16 @@ public:
       return;
     m_refine_border = internal::sqrt3_border_is_pending(mesh, m_number);
     m_slot.assign(halfedge_count, 0);
+    m_border_in.assign(m_vertex_count, boost::graph_traits<Mesh>::null_halfedge());
     Index face_slot = 0, border_slot = static_cast<Index>(3 * m_face_count);
-    for(halfedge_descriptor h : halfedges(mesh))
-      m_slot[m_number(h)] = is_border(h, mesh) ? border_slot++ : face_slot++;
+    for(halfedge_descriptor h : halfedges(mesh)) {
+      if(is_border(h, mesh)) {
+        m_slot[m_number(h)] = border_slot++;
+        m_border_in[m_number(target(h, mesh))] = h;
+      } else {
+        m_slot[m_number(h)] = face_slot++;
+      }
+    }
     if(!m_refine_border)
       return;
     // refining: face points only for faces without border edge, then p1, p2
@@ -263,10 +270,7 @@ public:
         visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
         continue;
       }
-      halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m_mesh))
-        if(is_border(h, m_mesh))
-          border_in = h;
+      const halfedge_descriptor border_in = m_border_in[j];
       if(border_in == boost::graph_traits<Mesh>::null_halfedge())
         visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
       else if(m_refine_border)
@@ -397,6 +401,7 @@ private:
   std::size_t m_border_edges = 0;
   bool m_refine_border = false;
   std::vector<Index> m_slot;          // spoke slot of each halfedge (mesh with border)
+  std::vector<halfedge_descriptor> m_border_in; // the border halfedge ending at each vertex, if any
   std::vector<Index> m_face_vertex;   // refining step: face point, or p1 of a border face
   std::vector<Index> m_face_of_point; // refining step: the face of each face point
   std::vector<Index> m_edge_of_border_face; // refining step: the border edge of each border face
