@@ -41,22 +41,25 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     if(CGAL::is_border(h, mesh))
       put(incoming_border, target(h, mesh), get(incoming_border, target(h, mesh)) + 1);
   }
+  // messages are built only on failure: this runs on every call
   std::size_t i = 0;
   for(auto v : vertices(mesh)) {
-    require(halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge(),
-            scheme + ": vertex " + std::to_string(i) + " is isolated (it belongs to no face)");
-    require(is_finite_point(get(vpm, v)), scheme + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
-    require(CGAL::halfedges_around_target(v, mesh).size() == get(incoming, v) && get(incoming_border, v) <= 1,
-            scheme + ": vertex " + std::to_string(i) + " is non-manifold (its faces do not form one fan)");
+    if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())
+      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " is isolated (it belongs to no face)");
+    if(!is_finite_point(get(vpm, v)))
+      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+    if(CGAL::halfedges_around_target(v, mesh).size() != get(incoming, v) || get(incoming_border, v) > 1)
+      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " is non-manifold (its faces do not form one fan)");
     ++i;
   }
   i = 0;
   for(auto f : faces(mesh)) {
     const std::size_t size = CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size();
-    require(size >= 3, scheme + ": face " + std::to_string(i) + " has only " + std::to_string(size) + " vertices");
-    require(required_face_size == 0 || size == static_cast<std::size_t>(required_face_size),
-            scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) + " vertices; face " +
-              std::to_string(i) + " has " + std::to_string(size));
+    if(size < 3)
+      throw Bad_input(scheme + ": face " + std::to_string(i) + " has only " + std::to_string(size) + " vertices");
+    if(required_face_size != 0 && size != static_cast<std::size_t>(required_face_size))
+      throw Bad_input(scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) +
+                      " vertices; face " + std::to_string(i) + " has " + std::to_string(size));
     ++i;
   }
   require(CGAL::is_valid_polygon_mesh(mesh), scheme + ": the mesh is not a valid polygon mesh");
