@@ -1,0 +1,818 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_ANALYSIS_SURFACE_ANALYSIS_H
+#define CGAL_SUBDIV_ANALYSIS_SURFACE_ANALYSIS_H
+
+/// \file surface_analysis.h
+/// Eigen-analysis of surface schemes at extraordinary vertices (and faces),
+/// from the schemes' own masks: spectrum, C1 conditions, characteristic map,
+/// limit and tangent masks, and a check of the limit mask by refinement.
+
+#include <CGAL/Subdiv/analysis/curve_analysis.h>     // sort_eigenvalues, to_double_matrix
+#include <CGAL/Subdiv/analysis/curve_local_matrix.h> // exact ranks, left fixed vector
+#include <CGAL/Subdiv/analysis/surface_neighbourhood.h>
+#include <CGAL/Subdiv/errors.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fraction_traits.h>
+#include <CGAL/intersections.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * The verdict of the characteristic-map test (see `analyse_surface_scheme()`).
+ */
+enum class Characteristic_map_verdict {
+  regular_injective, ///< regular and injective: with the eigenvalue conditions, C1
+  not_regular,       ///< some face of the refined ring flips (or degenerates)
+  not_injective,     ///< regular, but the ring overlaps itself (winding number != 1)
+  not_applicable     ///< no subdominant pair to build the map from
+};
+
+/// the name used in reports: "regular_injective", "not_regular", "not_injective", "not_applicable"
+inline std::string to_string(Characteristic_map_verdict verdict)
+{
+  switch(verdict) {
+    case Characteristic_map_verdict::regular_injective: return "regular_injective";
+    case Characteristic_map_verdict::not_regular: return "not_regular";
+    case Characteristic_map_verdict::not_injective: return "not_injective";
+    default: return "not_applicable";
+  }
+}
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * What the analysis computes; see `Surface_analysis`.
+ */
+struct Surface_analysis_options
+{
+  /// test the characteristic map (the costliest part)
+  bool characteristic_map = true;
+  /// subdivide a random neighbourhood and compare its limit with the limit mask
+  bool verify_limit = true;
+  /// the characteristic-map and verification meshes stop growing at this many faces
+  std::size_t max_faces = 120000;
+  /// seed of the random neighbourhood of the verification
+  unsigned seed = 20260;
+};
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * The analysis of a surface scheme at one vertex (or face) configuration,
+ * see `analyse_surface_scheme()`. Vertices of the neighbourhood are in the
+ * canonical order of `local_subdivision_matrix()`: label 0 is the centre
+ * (for a face-centred scheme, labels 0..n-1 are the corners of the central
+ * face), then ring by ring; `ring[i]` is the ring of label i.
+ */
+template <class FT>
+struct Surface_analysis
+{
+  std::string scheme;   ///< `mask.name()`
+  int valence = 0;      ///< valence n (border: number of faces k; dual: corners of the central face)
+  bool boundary = false;
+  bool face_centred = false; ///< dual scheme: the neighbourhood is centred at an n-gon
+  int rings = 0;             ///< rings of the (smallest invariant) neighbourhood
+  std::vector<int> ring;     ///< ring of every label
+  /// the local subdivision matrix over the neighbourhood, in FT
+  Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic> matrix;
+  /// every entry is an exact rational of the scheme: FT is exact and no
+  /// weight is a rounded transcendental number (every denominator < 2^40;
+  /// a weight rounded from a double has a denominator >= 2^50)
+  bool exact = false;
+  /// every row of the matrix sums to 1 (exactly, for exact FT)
+  bool rows_sum_to_one = false;
+  /// all eigenvalues (Eigen, in double), by modulus, largest first (ties:
+  /// real part, then imaginary part, largest first). For exact matrices (up
+  /// to 64 x 64) every real eigenvalue within 1e-9 of a rational p/q
+  /// (q <= 4096) is tested exactly (rank of (S - p/q I)^k in FT) and, when
+  /// confirmed, reported exactly with its algebraic multiplicity.
+  std::vector<std::complex<double>> eigenvalues;
+  /// the eigenvalues confirmed exactly, with their algebraic multiplicities
+  std::vector<std::pair<FT, int>> exact_eigenvalues;
+  /// eigenvalue 1 is simple (exactly, for exact FT) and every other |lambda| < 1
+  bool one_is_simple_and_dominant = false;
+  /// lambda_1 (largest modulus after lambda_0 = 1)
+  std::complex<double> subdominant{0, 0};
+  /// how many eigenvalues equal lambda_1 (tolerance 1e-8; a complex lambda_1 counts once)
+  int subdominant_multiplicity = 0;
+  /// lambda_2, the other eigenvalue of the subdominant pair
+  std::complex<double> second_subdominant{0, 0};
+  /// the necessary condition for C1: lambda_0 = 1 simple and dominant and,
+  /// at an interior vertex, lambda_1 = lambda_2 real positive > |lambda_3|;
+  /// at a border vertex, where the border curve and the interior have their
+  /// own eigenvalues, the condition of [Zorin 2000] instead: lambda_1 >=
+  /// lambda_2 > |lambda_3|, both real positive (the characteristic map is then
+  /// built from the eigenvectors of lambda_1 and lambda_2)
+  bool c1_necessary = false;
+  /// rings of the larger neighbourhood used for the characteristic map
+  int extended_rings = 0;
+  /// largest |lambda| of the larger neighbourhood's matrix apart from 1 and
+  /// the subdominant pair: eigenvalues that the smallest invariant
+  /// neighbourhood does not see (they come from its outer rings)
+  double extended_largest_other = 0;
+  /// the larger matrix has 1 simple, the same subdominant pair, and
+  /// nothing else of modulus >= |lambda_1| (tolerance 1e-9)
+  bool extended_spectrum_ok = false;
+  /// the characteristic-map verdict
+  Characteristic_map_verdict characteristic_map = Characteristic_map_verdict::not_applicable;
+  /// refinement levels the characteristic map was computed with, and the
+  /// rings [inner, outer] of the annulus that was tested
+  int characteristic_map_levels = 0, annulus_inner = 0, annulus_outer = 0;
+  /// the final verdict: one_is_simple_and_dominant, c1_necessary,
+  /// extended_spectrum_ok and a regular injective characteristic map
+  bool c1 = false;
+  /// left eigenvector of 1 normalised to sum 1, by label (exact for exact
+  /// FT); empty if 1 is not simple. The limit of the centre is
+  /// sum_i limit_mask[i] * p_i.
+  std::vector<FT> limit_mask;
+  /// two left eigenvectors of the subdominant pair (real and imaginary part
+  /// for a complex pair), by label, orthonormalised and rotated so that the
+  /// first has the largest possible weight on label 1 and the second a zero
+  /// weight there (for Loop: cos(2 pi i/n) and sin(2 pi i/n) on ring 1, up to scale)
+  std::vector<double> tangent_mask[2];
+
+  /// verification: levels of the real host on the whole random patch, the
+  /// distance of the centre to the predicted limit after them (relative to
+  /// the diameter of the neighbourhood), and |lambda_1|^levels
+  int host_levels = 0;
+  double host_error = -1, host_lambda_power = 0;
+  /// verification: further levels, each the real host on the patch cropped to
+  /// the neighbourhood and 2 more rings, until the centre stops moving, and
+  /// the final relative distance to the predicted limit
+  int cropped_levels = 0;
+  double limit_error = -1;
+
+  /// the limit-mask weight of the centre (label 0; for a face-centred
+  /// neighbourhood, of the first corner)
+  FT limit_mask_centre() const { return limit_mask.empty() ? FT(0) : limit_mask.front(); }
+};
+
+namespace internal {
+
+// the rational p/q (q <= max_q) nearest to x by continued fractions, if within tol
+inline bool nearby_rational(double x, long max_q, double tol, long& p, long& q)
+{
+  if(!std::isfinite(x) || std::abs(x) > 1e6)
+    return false;
+  long h0 = 1, h1 = 0, k0 = 0, k1 = 1; // convergents h/k
+  double r = x;
+  for(int iteration = 0; iteration < 40; ++iteration) {
+    const double a_double = std::floor(r);
+    const long a = static_cast<long>(a_double);
+    const long h2 = a * h0 + h1, k2 = a * k0 + k1;
+    if(k2 > max_q)
+      break;
+    h1 = h0;
+    k1 = k0;
+    h0 = h2;
+    k0 = k2;
+    if(std::abs(x - static_cast<double>(h0) / static_cast<double>(k0)) < tol) {
+      p = h0;
+      q = k0;
+      return true;
+    }
+    const double fraction = r - a_double;
+    if(fraction < 1e-15)
+      break;
+    r = 1 / fraction;
+  }
+  return false;
+}
+
+template <class FT>
+bool has_small_denominator(const FT& x)
+{
+  if constexpr(std::is_floating_point<FT>::value) {
+    return false;
+  } else {
+    using Traits = CGAL::Fraction_traits<FT>;
+    if constexpr(!std::is_same<typename Traits::Is_fraction, CGAL::Tag_true>::value) {
+      return false;
+    } else {
+      typename Traits::Numerator_type num;
+      typename Traits::Denominator_type den;
+      typename Traits::Decompose()(x, num, den);
+      typename Traits::Denominator_type bound(1);
+      for(int i = 0; i < 40; ++i)
+        bound = bound * typename Traits::Denominator_type(2);
+      return CGAL::abs(den) < bound;
+    }
+  }
+}
+
+// snaps computed real eigenvalues to rationals confirmed exactly
+template <class FT>
+void confirm_rational_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S,
+                                  std::vector<std::complex<double>>& values, std::vector<std::pair<FT, int>>& confirmed)
+{
+  if constexpr(std::is_floating_point<FT>::value) {
+    return;
+  } else {
+    if(S.rows() > 64)
+      return;
+    std::vector<std::pair<long, long>> tried;
+    for(const auto& value : std::vector<std::complex<double>>(values)) {
+      long p = 0, q = 1;
+      if(std::abs(value.imag()) > 1e-7 || !nearby_rational(value.real(), 4096, 1e-9, p, q))
+        continue;
+      if(std::find(tried.begin(), tried.end(), std::make_pair(p, q)) != tried.end())
+        continue;
+      tried.emplace_back(p, q);
+      const FT lambda = FT(p) / FT(q);
+      int multiplicity = algebraic_multiplicity(S, lambda);
+      if(multiplicity == 0)
+        continue;
+      confirmed.emplace_back(lambda, multiplicity);
+      const double target = static_cast<double>(p) / static_cast<double>(q);
+      std::vector<bool> used(values.size(), false);
+      for(; multiplicity > 0; --multiplicity) {
+        std::size_t best = values.size();
+        for(std::size_t i = 0; i < values.size(); ++i)
+          if(!used[i] && (best == values.size() || std::abs(values[i] - target) < std::abs(values[best] - target)))
+            best = i;
+        if(best == values.size() || std::abs(values[best] - target) > 1e-4)
+          break;
+        values[best] = std::complex<double>(target, 0.0);
+        used[best] = true;
+      }
+    }
+    sort_eigenvalues(values);
+  }
+}
+
+// orthonormalises the pair and rotates it: the first gets the largest weight
+// possible on label 1, the second zero there, with a positive weight on label 2
+inline void canonical_pair(Eigen::VectorXd& a, Eigen::VectorXd& b)
+{
+  if(a.norm() == 0 || a.size() < 3)
+    return;
+  a.normalize();
+  b = b - a.dot(b) * a;
+  if(b.norm() == 0)
+    return;
+  b.normalize();
+  const double x = a[1], y = b[1], r = std::hypot(x, y);
+  if(r > 1e-12) {
+    const Eigen::VectorXd first = (x * a + y * b) / r;
+    const Eigen::VectorXd second = (-y * a + x * b) / r;
+    a = first;
+    b = second;
+  }
+  if(b[2] < 0)
+    b = -b;
+}
+
+using Point_2d = std::array<double, 2>;
+
+struct Annulus_test
+{
+  Characteristic_map_verdict verdict = Characteristic_map_verdict::not_applicable;
+  int inner = 0, outer = 0;
+};
+
+// regularity and injectivity of the planar net over the rings [inner, outer]
+inline Annulus_test test_annulus(const Analysis_mesh& mesh, const std::vector<int>& ring_of_vertex, int inner,
+                                 int outer, bool border)
+{
+  using EK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  Annulus_test result;
+  result.inner = inner;
+  result.outer = outer;
+  const auto point = [&](Analysis_vertex v) -> Point_2d {
+    const auto& p = mesh.point(v);
+    return {p.x(), p.y()};
+  };
+  std::vector<char> in_annulus(mesh.number_of_faces(), 0);
+  double scale = 0;
+  std::vector<Analysis_face> faces;
+  for(Analysis_face f : mesh.faces()) {
+    bool inside = true;
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const int r = ring_of_vertex[v.idx()];
+      inside = inside && r >= inner && r <= outer;
+    }
+    if(!inside)
+      continue;
+    in_annulus[f.idx()] = 1;
+    faces.push_back(f);
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const Point_2d p = point(v);
+      scale = (std::max)(scale, p[0] * p[0] + p[1] * p[1]);
+    }
+  }
+  if(faces.empty() || scale == 0)
+    return result;
+  // regular: every corner of every face turns the same way (strictly convex faces, one orientation)
+  int sign = 0;
+  for(Analysis_face f : faces) {
+    std::vector<Point_2d> corners;
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.push_back(point(v));
+    const std::size_t m = corners.size();
+    for(std::size_t k = 0; k < m; ++k) {
+      const Point_2d& a = corners[(k + m - 1) % m];
+      const Point_2d& b = corners[k];
+      const Point_2d& c = corners[(k + 1) % m];
+      const double cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+      if(std::abs(cross) <= 1e-12 * scale) {
+        result.verdict = Characteristic_map_verdict::not_regular;
+        return result;
+      }
+      const int s = cross > 0 ? 1 : -1;
+      if(sign == 0)
+        sign = s;
+      if(s != sign) {
+        result.verdict = Characteristic_map_verdict::not_regular;
+        return result;
+      }
+    }
+  }
+  // boundary of the annulus: halfedges whose face is in it and whose opposite's is not
+  std::vector<Analysis_halfedge> boundary;
+  std::map<Analysis_vertex, Analysis_halfedge> leaving;
+  bool pinched = false;
+  for(Analysis_face f : faces)
+    for(Analysis_halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const Analysis_face g = mesh.face(mesh.opposite(h));
+      if(g != Analysis_mesh::null_face() && in_annulus[g.idx()])
+        continue;
+      boundary.push_back(h);
+      pinched = pinched || !leaving.emplace(mesh.source(h), h).second;
+    }
+  if(pinched) {
+    result.verdict = Characteristic_map_verdict::not_injective;
+    return result;
+  }
+  // no two boundary segments meet, except consecutive ones at their common vertex
+  std::vector<EK::Segment_2> segments;
+  std::vector<CGAL::Bbox_2> boxes;
+  for(Analysis_halfedge h : boundary) {
+    const Point_2d p = point(mesh.source(h)), q = point(mesh.target(h));
+    segments.emplace_back(EK::Point_2(p[0], p[1]), EK::Point_2(q[0], q[1]));
+    boxes.push_back(segments.back().bbox());
+  }
+  for(std::size_t i = 0; i < boundary.size(); ++i)
+    for(std::size_t j = i + 1; j < boundary.size(); ++j) {
+      if(!CGAL::do_overlap(boxes[i], boxes[j]))
+        continue;
+      const Analysis_vertex a = mesh.source(boundary[i]), b = mesh.target(boundary[i]);
+      const Analysis_vertex c = mesh.source(boundary[j]), d = mesh.target(boundary[j]);
+      if(a == c || a == d || b == c || b == d)
+        continue;
+      if(CGAL::do_intersect(segments[i], segments[j])) {
+        result.verdict = Characteristic_map_verdict::not_injective;
+        return result;
+      }
+    }
+  // loops and their winding numbers around the origin (the image of the centre)
+  std::vector<int> windings;
+  std::vector<double> areas;
+  std::map<Analysis_vertex, char> used;
+  for(Analysis_halfedge first : boundary) {
+    if(used[mesh.source(first)])
+      continue;
+    double angle = 0, area = 0;
+    Analysis_halfedge h = first;
+    std::size_t steps = 0;
+    do {
+      used[mesh.source(h)] = 1;
+      const Point_2d p = point(mesh.source(h)), q = point(mesh.target(h));
+      angle += std::atan2(p[0] * q[1] - p[1] * q[0], p[0] * q[0] + p[1] * q[1]);
+      area += p[0] * q[1] - p[1] * q[0];
+      const auto next_edge = leaving.find(mesh.target(h));
+      if(next_edge == leaving.end() || ++steps > boundary.size()) {
+        result.verdict = Characteristic_map_verdict::not_injective;
+        return result;
+      }
+      h = next_edge->second;
+    } while(h != first);
+    windings.push_back(static_cast<int>(std::lround(angle / (2 * 3.14159265358979323846))));
+    areas.push_back(area);
+  }
+  bool injective = false;
+  if(border) // one simple loop around the sector annulus, oriented as the faces
+    injective = windings.size() == 1 && areas[0] * sign > 0;
+  else // an outer loop around the origin as the faces turn, an inner one against
+    injective = windings.size() == 2 && ((windings[0] == sign && windings[1] == -sign) ||
+                                         (windings[0] == -sign && windings[1] == sign));
+  result.verdict = injective ? Characteristic_map_verdict::regular_injective : Characteristic_map_verdict::not_injective;
+  return result;
+}
+
+// rings of every vertex of a mesh from the centre given by `start`
+inline std::vector<int> rings_of_vertices(const Analysis_mesh& mesh, Analysis_halfedge start, bool face_centred)
+{
+  const Labelling labels = label_neighbourhood(mesh, start, face_centred, (std::numeric_limits<int>::max)() - 1);
+  std::vector<int> result(mesh.number_of_vertices(), (std::numeric_limits<int>::max)());
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    result[labels.vertex_of[i].idx()] = labels.ring[i];
+  return result;
+}
+
+template <class DoubleMask, class Result>
+void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& result,
+                                              const Surface_analysis_options& options)
+{
+  using Traits = Analysis_host_traits<typename DoubleMask::Host>;
+  const std::complex<double> lambda = result.subdominant, lambda2 = result.second_subdominant;
+  const bool complex_pair = std::abs(lambda.imag()) > 1e-12;
+  const std::complex<double> other = complex_pair ? std::conj(lambda) : lambda2;
+  const int big = 2 * result.rings + 2;
+  result.extended_rings = big;
+  const auto extended = local_matrix_of_rings(mask, result.valence, result.boundary, big);
+  require(extended.invariant, "the extended neighbourhood is not invariant");
+  const Eigen::MatrixXd S = extended.S;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(S, true);
+  if(solver.info() != Eigen::Success)
+    return;
+  // the extended spectrum
+  const double tol = 1e-9;
+  int ones = 0, near_pair = 0;
+  std::vector<Eigen::Index> pair;
+  result.extended_largest_other = 0;
+  for(Eigen::Index i = 0; i < S.rows(); ++i) {
+    const std::complex<double> mu = solver.eigenvalues()[i];
+    if(std::abs(mu - 1.0) < 1e-8) {
+      ++ones;
+    } else if(std::abs(mu - lambda) < 1e-7 || std::abs(mu - other) < 1e-7) {
+      ++near_pair;
+      pair.push_back(i);
+    } else {
+      result.extended_largest_other = (std::max)(result.extended_largest_other, std::abs(mu));
+    }
+  }
+  result.extended_spectrum_ok =
+    ones == 1 && near_pair == 2 && result.extended_largest_other < (std::min)(std::abs(lambda), std::abs(other)) - tol;
+  if(!result.c1_necessary && !complex_pair && !(result.subdominant_multiplicity == 2))
+    return; // no pair to build the map from
+  if(near_pair != 2 || !options.characteristic_map)
+    return;
+  // the two real vectors spanning the subdominant eigenspace: for a real
+  // eigenvalue the right singular vectors of the smallest singular values of
+  // S - lambda I (two for a double eigenvalue: both ~0 unless it is
+  // defective); for a complex one the real and imaginary parts of its eigenvector
+  const auto kernel = [&](double value, int dimension, Eigen::VectorXd* first, Eigen::VectorXd* second) -> bool {
+    const Eigen::MatrixXd shifted = S - value * Eigen::MatrixXd::Identity(S.rows(), S.cols());
+    Eigen::BDCSVD<Eigen::MatrixXd> svd(shifted, Eigen::ComputeFullV);
+    const Eigen::Index last = S.rows() - 1;
+    if(!(svd.singularValues()[last - (dimension - 1)] < 1e-7 * (1 + svd.singularValues()[0])))
+      return false;
+    *first = svd.matrixV().col(last);
+    if(second)
+      *second = svd.matrixV().col(last - 1);
+    return true;
+  };
+  Eigen::VectorXd x, y;
+  if(complex_pair) {
+    const Eigen::VectorXcd v = solver.eigenvectors().col(pair[0]);
+    x = v.real();
+    y = v.imag();
+  } else if(std::abs(lambda - lambda2) < 1e-8) {
+    const double value = 0.5 * (solver.eigenvalues()[pair[0]].real() + solver.eigenvalues()[pair[1]].real());
+    if(!kernel(value, 2, &x, &y)) {
+      result.characteristic_map = Characteristic_map_verdict::not_regular; // a Jordan block: no 2D eigenspace
+      return;
+    }
+  } else if(!kernel(lambda.real(), 1, &x, nullptr) || !kernel(lambda2.real(), 1, &y, nullptr)) {
+    return;
+  }
+  const double gram = x.squaredNorm() * y.squaredNorm() - CGAL::square(x.dot(y));
+  if(!(gram > 1e-12 * x.squaredNorm() * y.squaredNorm())) {
+    result.characteristic_map = Characteristic_map_verdict::not_regular; // a Jordan block: no 2D eigenspace
+    return;
+  }
+  // the planar control net, then refinement by the real host with the double mask
+  Patch patch = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, big);
+  const Labelling labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, big);
+  require(labels.size() == static_cast<std::size_t>(S.rows()) && labels.size() == patch.mesh.number_of_vertices(),
+          "the characteristic-map patch does not match its matrix");
+  std::vector<char> trusted(patch.mesh.number_of_vertices(), 0);
+  for(std::size_t i = 0; i < labels.size(); ++i) {
+    patch.mesh.point(labels.vertex_of[i]) = Analysis_mesh::Point(x[static_cast<Eigen::Index>(i)],
+                                                                 y[static_cast<Eigen::Index>(i)], 0);
+    trusted[labels.vertex_of[i].idx()] = labels.ring[i] < big; // the outer ring is the patch border
+  }
+  Analysis_mesh mesh = patch.mesh;
+  Analysis_halfedge start = patch.start;
+  std::vector<int> rings;
+  int outer = 0;
+  for(int level = 1; level <= 8; ++level) {
+    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::steps == 2 ? 9 : 4) > options.max_faces &&
+       level > 2)
+      break;
+    auto step = analysed_step(mesh, start, mask);
+    std::vector<char> next_trusted(step.mesh.number_of_vertices(), 0);
+    for(std::size_t j = 0; j < step.stencils.size(); ++j) {
+      bool all = !step.stencils[j].empty();
+      for(const auto& term : step.stencils[j].terms())
+        all = all && trusted[term.first.idx()];
+      next_trusted[j] = all;
+    }
+    mesh = std::move(step.mesh);
+    start = step.start;
+    trusted.swap(next_trusted);
+    result.characteristic_map_levels = level;
+    rings = rings_of_vertices(mesh, start, Traits::face_centred);
+    outer = (std::numeric_limits<int>::max)();
+    for(Analysis_vertex v : mesh.vertices())
+      if(!trusted[v.idx()])
+        outer = (std::min)(outer, rings[v.idx()] - 1);
+    if(outer >= 24)
+      break;
+  }
+  if(outer < 6)
+    return; // too little of the map is known: not applicable
+  const int inner = (std::max)(1, outer / Traits::ring_growth - 1);
+  const Annulus_test test = test_annulus(mesh, rings, inner, outer, result.boundary);
+  result.characteristic_map = test.verdict;
+  result.annulus_inner = test.inner;
+  result.annulus_outer = test.outer;
+}
+
+// the point the verification tracks: the centre, or the first corner of the central face
+inline Analysis_mesh::Point tracked_point(const Analysis_mesh& mesh, Analysis_halfedge start)
+{
+  return mesh.point(mesh.source(start));
+}
+
+inline double distance(const Analysis_mesh::Point& p, const Analysis_mesh::Point& q)
+{
+  return std::sqrt(CGAL::squared_distance(p, q));
+}
+
+template <class DoubleMask, class Result>
+void verify_limit(const DoubleMask& mask, Result& result, const std::vector<double>& limit_mask,
+                  const Surface_analysis_options& options)
+{
+  using Traits = Analysis_host_traits<typename DoubleMask::Host>;
+  const int rings = result.rings + 2;
+  Patch patch = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, rings);
+  std::mt19937 random(options.seed + static_cast<unsigned>(result.valence) + (result.boundary ? 1000u : 0u));
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for(Analysis_vertex v : patch.mesh.vertices())
+    patch.mesh.point(v) = Analysis_mesh::Point(coordinate(random), coordinate(random), coordinate(random));
+  const Labelling labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, result.rings);
+  double predicted[3] = {0, 0, 0}, diameter = 0;
+  for(std::size_t i = 0; i < labels.size(); ++i) {
+    const auto& p = patch.mesh.point(labels.vertex_of[i]);
+    predicted[0] += limit_mask[i] * p.x();
+    predicted[1] += limit_mask[i] * p.y();
+    predicted[2] += limit_mask[i] * p.z();
+    for(std::size_t j = 0; j < i; ++j)
+      diameter = (std::max)(diameter, distance(p, patch.mesh.point(labels.vertex_of[j])));
+  }
+  const Analysis_mesh::Point limit(predicted[0], predicted[1], predicted[2]);
+  // the real host on the whole patch, as long as it fits
+  Analysis_mesh mesh = patch.mesh;
+  Analysis_halfedge start = patch.start;
+  const double growth = Traits::steps == 2 ? 9 : 4;
+  int level = 0;
+  while(level < 3 || static_cast<double>(mesh.number_of_faces()) * growth <= static_cast<double>(options.max_faces)) {
+    auto step = analysed_step(mesh, start, mask);
+    mesh = std::move(step.mesh);
+    start = step.start;
+    ++level;
+  }
+  result.host_levels = level;
+  result.host_error = distance(tracked_point(mesh, start), limit) / diameter;
+  result.host_lambda_power = std::pow(std::abs(result.subdominant), level);
+  // then the real host on the cropped patch, until the point stops moving
+  for(int more = 0; more < 400; ++more) {
+    Patch fresh = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, rings);
+    const Labelling to = label_neighbourhood(fresh.mesh, fresh.start, Traits::face_centred, rings);
+    const Labelling from = label_neighbourhood(mesh, start, Traits::face_centred, rings);
+    require(to.size() == from.size(), "the cropped neighbourhood does not match");
+    for(std::size_t i = 0; i < to.size(); ++i)
+      fresh.mesh.point(to.vertex_of[i]) = mesh.point(from.vertex_of[i]);
+    const Analysis_mesh::Point before = tracked_point(fresh.mesh, fresh.start);
+    auto step = analysed_step(fresh.mesh, fresh.start, mask);
+    mesh = std::move(step.mesh);
+    start = step.start;
+    result.cropped_levels = more + 1;
+    if(distance(before, tracked_point(mesh, start)) <= 1e-15 * diameter)
+      break;
+  }
+  result.limit_error = distance(tracked_point(mesh, start), limit) / diameter;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * analyses a surface scheme at an interior vertex of valence `valence`, or
+ * (`boundary`) at a border vertex with `valence` faces, or, for a dual scheme
+ * (`Dual_split`: Doo-Sabin), at an interior face with `valence` corners; all
+ * other vertices of the neighbourhood are regular (see
+ * `local_subdivision_matrix()`). As in [Reif 1995, "A unified approach to
+ * subdivision algorithms near extraordinary vertices"] and [Zorin 2000,
+ * "Smoothness of stationary subdivision on irregular meshes"]:
+ *
+ * 1. the local subdivision matrix S of the smallest invariant neighbourhood,
+ *    assembled in FT from the scheme's own host and mask (exact where the
+ *    weights are rational); its rows must sum to 1;
+ * 2. its eigenvalues (Eigen's `EigenSolver` in double), rational ones
+ *    confirmed exactly; whether 1 is simple and dominant (its algebraic
+ *    multiplicity is computed exactly for exact FT); the subdominant
+ *    eigenvalue lambda_1 and its multiplicity; the necessary condition for
+ *    C1, lambda_1 = lambda_2 real > |lambda_3| (at a border vertex
+ *    lambda_1 >= lambda_2 > |lambda_3|, both real, as in [Zorin 2000]: the
+ *    border curve and the interior have eigenvalues of their own);
+ * 3. the limit mask: the left eigenvector of 1 normalised to sum 1, solved
+ *    exactly in FT (Gaussian elimination); the tangent masks: left
+ *    eigenvectors of the subdominant pair (double);
+ * 4. the extended spectrum: the matrix of a larger neighbourhood (2r + 2
+ *    rings, in double) must have no eigenvalue other than 1 and the
+ *    subdominant pair of modulus >= |lambda_1|: eigenvalues of the outer
+ *    rings would otherwise dominate the tangent plane;
+ * 5. the characteristic map [Reif 1995]: the two real eigenvectors of the
+ *    subdominant pair of the larger matrix (real and imaginary part for a
+ *    complex pair) are the x and y of a planar control net over the larger
+ *    neighbourhood, refined by the real host and the mask (in double) until
+ *    the part of the net that the patch border has not reached (tracked
+ *    through the stencils) covers 24 rings, at most 8 levels and about
+ *    `options.max_faces` faces. The net over the annulus of rings
+ *    [outer / g - 1, outer] (g = 2, or 3 for two sqrt3 steps) is tested:
+ *    regular if every corner of every face turns the same way (cross product
+ *    beyond 1e-12 times the squared radius of the annulus: the faces are
+ *    strictly convex and consistently oriented); injective if moreover the
+ *    boundary of the annulus is made of simple, pairwise disjoint closed
+ *    polygons: for an interior vertex two, winding once around the origin
+ *    (the image of the centre) in opposite directions, for a border vertex
+ *    one, oriented as the faces. By the degree argument, a consistently
+ *    oriented net whose boundary is such is one-to-one, and by the scaling
+ *    S x = lambda x the annuli of all levels tile a punctured neighbourhood of
+ *    the origin;
+ * 6. the verdict `c1`: 1 simple and dominant, the C1 condition, the extended
+ *    spectrum and a regular injective characteristic map. For a complex
+ *    subdominant pair the characteristic map is still tested but `c1` is
+ *    false;
+ * 7. verification of the limit mask (`options.verify_limit`): a patch of the
+ *    neighbourhood and two more rings, with random points in [-1, 1]^3, is
+ *    refined by the real host and mask (double) while it stays under
+ *    `max_faces` (`host_error`, of order |lambda_1|^levels), then cropped
+ *    back to those rings and refined again, level after level, until the
+ *    centre moves less than 1e-15 of the diameter: `limit_error` is its
+ *    distance to the point the limit mask predicts, relative to the diameter
+ *    of the neighbourhood.
+ *
+ * Schemes with a mask for border vertices are analysed at border vertices;
+ * sqrt3 (whose border rules alternate between steps) and Doo-Sabin (dual,
+ * centred at a face) are analysed at interior configurations only.
+ *
+ * \tparam MaskTemplate `MaskTemplate<Mesh, FT>` is a mask (`Loop_mask`,
+ *         `Catmull_clark_mask`, `Doo_sabin_mask`, `Butterfly_mask`,
+ *         `Modified_butterfly_mask`, `Sqrt3_mask`, ...; an alias template
+ *         fixes other parameters, e.g. Warren's beta for Loop). It is
+ *         instantiated with `Analysis_mesh` and FT (the matrix) and with
+ *         `double` (characteristic map, verification).
+ * \tparam FT exact field type of the matrix (default `CGAL::Exact_rational`)
+ * \param args forwarded to both masks' constructors (a tension, a
+ *         `Border_corners` value, ...)
+ * \throws Bad_input for an impossible configuration
+ */
+template <template <class, class> class MaskTemplate, class FT = CGAL::Exact_rational, class... Args>
+Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
+                                            const Surface_analysis_options& options = Surface_analysis_options(),
+                                            const Args&... args)
+{
+  using Mask = MaskTemplate<Analysis_mesh, FT>;
+  using Double_mask = MaskTemplate<Analysis_mesh, double>;
+  using Traits = Analysis_host_traits<typename Mask::Host>;
+  const Mask mask(args...);
+  const Double_mask double_mask(args...);
+  Surface_analysis<FT> result;
+  result.scheme = mask.name();
+  result.valence = valence;
+  result.boundary = boundary;
+  result.face_centred = Traits::face_centred;
+  internal::require(!(boundary && Traits::steps != 1), "border vertices of " + mask.name() + " are not analysed");
+
+  // 1. the matrix
+  Local_subdivision_matrix<FT> local = local_subdivision_matrix<MaskTemplate, FT>(valence, boundary, 0, args...);
+  result.matrix = local.S;
+  result.ring = local.ring;
+  result.rings = local.rings;
+  const Eigen::Index m = result.matrix.rows();
+  result.exact = !std::is_floating_point<FT>::value;
+  result.rows_sum_to_one = true;
+  for(Eigen::Index r = 0; r < m; ++r) {
+    FT sum(0);
+    for(Eigen::Index c = 0; c < m; ++c) {
+      sum += result.matrix(r, c);
+      if(result.exact && !internal::has_small_denominator(result.matrix(r, c)))
+        result.exact = false;
+    }
+    result.rows_sum_to_one = result.rows_sum_to_one && internal::is_negligible(FT(sum - FT(1)), FT(1));
+  }
+
+  // 2. the spectrum
+  const Eigen::MatrixXd D = internal::to_double_matrix(result.matrix);
+  result.eigenvalues = internal::sorted_eigenvalues(D);
+  internal::confirm_rational_eigenvalues(result.matrix, result.eigenvalues, result.exact_eigenvalues);
+  const auto& ev = result.eigenvalues;
+  if(ev.size() < 2)
+    return result;
+  const double tol = 1e-8;
+  int ones = 0;
+  bool others_inside = true;
+  for(const auto& value : ev) {
+    if(std::abs(value - 1.0) < tol)
+      ++ones;
+    else if(std::abs(value) >= 1 - tol)
+      others_inside = false;
+  }
+  if constexpr(!std::is_floating_point<FT>::value)
+    ones = internal::algebraic_multiplicity(result.matrix, FT(1));
+  result.one_is_simple_and_dominant = ones == 1 && others_inside && std::abs(ev[0] - 1.0) < tol;
+  result.subdominant = ev[1];
+  result.second_subdominant = ev.size() > 2 ? ev[2] : std::complex<double>(0, 0);
+  result.subdominant_multiplicity = 0;
+  for(const auto& value : ev)
+    if(std::abs(value - ev[1]) < tol)
+      ++result.subdominant_multiplicity;
+  const bool real_pair = ev.size() >= 3 && std::abs(ev[1].imag()) < tol && std::abs(ev[2].imag()) < tol &&
+                         ev[2].real() > tol;
+  const bool gap = ev.size() < 4 || std::abs(ev[3]) < ev[2].real() - tol;
+  if(boundary)
+    result.c1_necessary = result.one_is_simple_and_dominant && real_pair && gap;
+  else
+    result.c1_necessary = result.one_is_simple_and_dominant && real_pair && result.subdominant_multiplicity == 2 && gap;
+
+  // 3. limit and tangent masks
+  result.limit_mask = internal::normalised_left_fixed_vector(result.matrix);
+  {
+    Eigen::EigenSolver<Eigen::MatrixXd> left(D.transpose(), true);
+    if(left.info() == Eigen::Success) {
+      std::vector<Eigen::Index> near; // eigenvalues of the pair: lambda_1 first
+      for(const std::complex<double>& target : {ev[1], ev.size() > 2 ? ev[2] : ev[1]})
+        for(Eigen::Index i = 0; i < m; ++i)
+          if(std::abs(left.eigenvalues()[i] - target) < 1e-7 &&
+             std::find(near.begin(), near.end(), i) == near.end()) {
+            near.push_back(i);
+            break;
+          }
+      Eigen::VectorXd a, b;
+      if(std::abs(ev[1].imag()) > 1e-12 && !near.empty()) {
+        a = left.eigenvectors().col(near[0]).real();
+        b = left.eigenvectors().col(near[0]).imag();
+      } else if(near.size() >= 2) {
+        a = left.eigenvectors().col(near[0]).real();
+        b = left.eigenvectors().col(near[1]).real();
+      }
+      if(a.size() == m) {
+        internal::canonical_pair(a, b);
+        result.tangent_mask[0].assign(a.data(), a.data() + m);
+        result.tangent_mask[1].assign(b.data(), b.data() + m);
+      }
+    }
+  }
+
+  // 4.-6. extended spectrum, characteristic map, verdict
+  if(result.one_is_simple_and_dominant)
+    internal::characteristic_map_and_extended_spectrum(double_mask, result, options);
+  result.c1 = result.one_is_simple_and_dominant && result.c1_necessary && result.extended_spectrum_ok &&
+              result.characteristic_map == Characteristic_map_verdict::regular_injective;
+
+  // 7. verification of the limit mask
+  if(options.verify_limit && !result.limit_mask.empty() && result.one_is_simple_and_dominant) {
+    std::vector<double> mask_double;
+    for(const FT& w : result.limit_mask)
+      mask_double.push_back(CGAL::to_double(w));
+    internal::verify_limit(double_mask, result, mask_double, options);
+  }
+  return result;
+}
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * `analyse_surface_scheme<MaskTemplate>(valence, false)`: the analysis at an
+ * interior vertex (or face) of the given valence, as in the design sketch
+ * `analyse<Loop_mask>(valence)`.
+ */
+template <template <class, class> class MaskTemplate>
+Surface_analysis<CGAL::Exact_rational> analyse(int valence)
+{
+  return analyse_surface_scheme<MaskTemplate>(valence, false);
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_ANALYSIS_SURFACE_ANALYSIS_H

@@ -1,0 +1,596 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_ANALYSIS_SURFACE_NEIGHBOURHOOD_H
+#define CGAL_SUBDIV_ANALYSIS_SURFACE_NEIGHBOURHOOD_H
+
+/// \file surface_neighbourhood.h
+/// The invariant neighbourhood of a vertex (or, for dual schemes, of a face)
+/// of a surface scheme, built as a real mesh, refined by the scheme's own host
+/// and mask, and the local subdivision matrix read from the recorded stencils.
+
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Dual_split.h>
+#include <CGAL/Subdiv/hosts/Quad_split.h>
+#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
+#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * The mesh type on which the analysis builds its neighbourhoods: a
+ * `Surface_mesh` of double points. The positions only serve the geometric
+ * checks (characteristic map, convergence); the matrices are read from the
+ * stencils, whose weights have the mask's own number type.
+ */
+using Analysis_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * What the analysis needs to know about a refinement host: the face size of
+ * its regular meshes, whether the neighbourhood is centred at a vertex
+ * (primal schemes) or at a face (dual schemes), how many host steps make one
+ * analysed step, and by how much the ring count grows per analysed step.
+ *
+ * - `Triangle_quadrisection`: triangles, vertex centre, 1 step, rings x 2;
+ * - `Quad_split`: quads, vertex centre, 1 step, rings x 2;
+ * - `Dual_split`: quads, face centre, 1 step, rings x 2;
+ * - `Sqrt3_split`: triangles, vertex centre, 2 steps (one sqrt3 step rotates
+ *   the neighbourhood by half a sector; two steps are the 1-to-9 split, which
+ *   maps every ring onto itself), rings x 3. The matrix, its eigenvalues and
+ *   the characteristic map are those of the double step
+ *   \f$ S = S_2 S_1 \f$: the eigenvalues are the squares of the moduli of the
+ *   single-step ones.
+ */
+template <class Host>
+struct Analysis_host_traits;
+
+template <class Mesh>
+struct Analysis_host_traits<Triangle_quadrisection<Mesh>>
+{
+  static constexpr int face_size = 3;
+  static constexpr bool face_centred = false;
+  static constexpr int steps = 1;
+  static constexpr int ring_growth = 2;
+};
+
+template <class Mesh>
+struct Analysis_host_traits<Quad_split<Mesh>>
+{
+  static constexpr int face_size = 4;
+  static constexpr bool face_centred = false;
+  static constexpr int steps = 1;
+  static constexpr int ring_growth = 2;
+};
+
+template <class Mesh>
+struct Analysis_host_traits<Dual_split<Mesh>>
+{
+  static constexpr int face_size = 4;
+  static constexpr bool face_centred = true;
+  static constexpr int steps = 1;
+  static constexpr int ring_growth = 2;
+};
+
+template <class Mesh>
+struct Analysis_host_traits<Sqrt3_split<Mesh>>
+{
+  static constexpr int face_size = 3;
+  static constexpr bool face_centred = false;
+  static constexpr int steps = 2;
+  static constexpr int ring_growth = 3;
+};
+
+namespace internal {
+
+using Analysis_vertex = Analysis_mesh::Vertex_index;
+using Analysis_halfedge = Analysis_mesh::Halfedge_index;
+using Analysis_face = Analysis_mesh::Face_index;
+
+/*
+ * A regular patch around a centre, and where to start reading it:
+ * - vertex centre: `start` runs from the centre to its first neighbour
+ *   (interior: any; border: the border neighbour whose edge has its face on
+ *   the left of `start`, so that walking counter-clockwise covers the faces);
+ * - face centre: `start` is the halfedge of the central face that leaves its
+ *   first corner.
+ */
+struct Patch
+{
+  Analysis_mesh mesh;
+  Analysis_halfedge start;
+};
+
+/*
+ * Builds the patch of `rings` rings around a centre of valence n (interior)
+ * or with n faces (border), all other vertices regular, from n sectors of the
+ * regular triangle or square grid (rings in the face metric: ring r + 1 holds
+ * the vertices of the faces touching ring r). Dual (face-centred) patches: a
+ * central n-gon, each of its corners the corner of a quadrant of the square
+ * grid, consecutive quadrants joined by a strip of quads; all vertices of
+ * valence 4. The layout puts sector i between the directions
+ * 2 pi i / n and 2 pi (i + 1) / n (border: pi i / n); it is planar.
+ */
+inline Patch build_patch(int face_size, bool face_centred, int n, bool border, int rings)
+{
+  require(n >= 1, "the valence must be positive, got " + std::to_string(n));
+  require(!(face_centred && border), "border neighbourhoods of face-centred (dual) schemes are not supported");
+  require(face_centred || border || n >= 3, "an interior vertex needs valence 3 or more, got " + std::to_string(n));
+  require(!face_centred || n >= 3, "a face needs 3 or more corners, got " + std::to_string(n));
+  const int sectors = n;
+  const double angle = (border ? 3.14159265358979323846 : 2 * 3.14159265358979323846) / n;
+  const auto direction = [&](int i) -> std::pair<double, double> {
+    return {std::cos(angle * i), std::sin(angle * i)};
+  };
+  Patch patch;
+  Analysis_mesh& mesh = patch.mesh;
+  std::map<std::tuple<int, int, int>, Analysis_vertex> ids;
+  const double offset = face_centred ? 0.5 : 0.0;
+  // the vertex of sector i at grid position (a, b)
+  const auto vertex = [&](int i, int a, int b) -> Analysis_vertex {
+    if(!face_centred) {
+      if(a == 0 && b == 0)
+        i = 0;
+      else if(a == 0) { // on the axis shared with the next sector
+        i = i + 1;
+        a = b;
+        b = 0;
+      }
+      if(!border)
+        i %= sectors;
+    }
+    const auto key = std::make_tuple(i, a, b);
+    const auto found = ids.find(key);
+    if(found != ids.end())
+      return found->second;
+    const auto u = direction(i), w = direction(i + 1);
+    const double x = (a + offset) * u.first + (b + offset) * w.first;
+    const double y = (a + offset) * u.second + (b + offset) * w.second;
+    const Analysis_vertex v = mesh.add_vertex(Analysis_mesh::Point(x, y, 0));
+    ids.emplace(key, v);
+    return v;
+  };
+  const Analysis_vertex centre = face_centred ? Analysis_vertex() : vertex(0, 0, 0);
+  std::vector<std::vector<Analysis_vertex>> faces;
+  for(int i = 0; i < sectors; ++i) {
+    if(face_size == 3) {
+      for(int a = 0; a < rings; ++a)
+        for(int b = 0; a + b < rings; ++b) {
+          faces.push_back({vertex(i, a, b), vertex(i, a + 1, b), vertex(i, a, b + 1)});
+          if(a + b + 2 <= rings)
+            faces.push_back({vertex(i, a + 1, b), vertex(i, a + 1, b + 1), vertex(i, a, b + 1)});
+        }
+    } else {
+      const int last = face_centred ? rings : rings - 1; // dual rings start at 0
+      for(int a = 0; a <= last - (face_centred ? 1 : 0); ++a)
+        for(int b = 0; b <= last - (face_centred ? 1 : 0); ++b)
+          faces.push_back({vertex(i, a, b), vertex(i, a + 1, b), vertex(i, a + 1, b + 1), vertex(i, a, b + 1)});
+      if(face_centred) // strip towards the next quadrant
+        for(int b = 0; b < rings; ++b)
+          faces.push_back(
+            {vertex(i, 0, b), vertex(i, 0, b + 1), vertex((i + 1) % n, b + 1, 0), vertex((i + 1) % n, b, 0)});
+    }
+  }
+  if(face_centred) {
+    std::vector<Analysis_vertex> central;
+    for(int i = 0; i < n; ++i)
+      central.push_back(vertex(i, 0, 0));
+    faces.insert(faces.begin(), central);
+  }
+  for(const auto& f : faces) {
+    const Analysis_face added = CGAL::Euler::add_face(f, mesh);
+    CGAL_assertion(added != Analysis_mesh::null_face());
+    (void)added;
+  }
+  if(face_centred) {
+    const Analysis_face f = *mesh.faces().begin();
+    Analysis_halfedge h = mesh.halfedge(f);
+    while(mesh.source(h) != vertex(0, 0, 0))
+      h = mesh.next(h);
+    patch.start = h;
+  } else if(border) {
+    // the border neighbour whose edge has its face on the left of centre -> neighbour
+    patch.start = Analysis_halfedge();
+    for(Analysis_halfedge h : CGAL::halfedges_around_source(centre, mesh))
+      if(!mesh.is_border(h) && mesh.is_border(mesh.opposite(h)))
+        patch.start = h;
+  } else {
+    for(Analysis_halfedge h : CGAL::halfedges_around_source(centre, mesh))
+      if(mesh.target(h) == vertex(0, 1, 0))
+        patch.start = h;
+  }
+  return patch;
+}
+
+/*
+ * The canonical numbering ("labels") of the vertices within `rings` rings of
+ * the centre, the same for every patch whose neighbourhood has the same
+ * connectivity:
+ * - ring 0: the centre (vertex centre) or the corners of the central face,
+ *   from the first one along the face (face centre);
+ * - then breadth first: a vertex v is read by walking counter-clockwise
+ *   around it, from the halfedge by which it was reached, over its faces,
+ *   each face's vertices listed in face order after v; every vertex not yet
+ *   labelled gets the next label and ring(v) + 1, if that is <= rings.
+ * For a vertex centre the walk starts at `start`, so label 1 is the target
+ * of `start`: for Loop ring 1 is v_0, v_1, ..., v_{n-1} counter-clockwise;
+ * for Catmull-Clark it is e_0, f_0, e_1, f_1, ... (edge neighbours at odd
+ * labels, face neighbours at even labels).
+ */
+struct Labelling
+{
+  std::vector<Analysis_vertex> vertex_of; // by label
+  std::vector<int> ring;                  // by label
+  std::map<Analysis_vertex, int> label_of;
+
+  std::size_t size() const { return vertex_of.size(); }
+  int label(Analysis_vertex v) const
+  {
+    const auto found = label_of.find(v);
+    return found == label_of.end() ? -1 : found->second;
+  }
+};
+
+inline Labelling label_neighbourhood(const Analysis_mesh& mesh, Analysis_halfedge start, bool face_centred, int rings)
+{
+  Labelling result;
+  std::vector<Analysis_halfedge> entry; // by label: the halfedge leaving the vertex the walk starts at
+  const auto add = [&](Analysis_vertex v, int ring, Analysis_halfedge out) {
+    result.label_of.emplace(v, static_cast<int>(result.vertex_of.size()));
+    result.vertex_of.push_back(v);
+    result.ring.push_back(ring);
+    entry.push_back(out);
+  };
+  if(face_centred) {
+    Analysis_halfedge h = start;
+    do {
+      add(mesh.source(h), 0, h);
+      h = mesh.next(h);
+    } while(h != start);
+  } else {
+    add(mesh.source(start), 0, start);
+  }
+  for(std::size_t i = 0; i < result.vertex_of.size(); ++i) {
+    if(result.ring[i] >= rings)
+      continue;
+    const Analysis_halfedge first = entry[i];
+    Analysis_halfedge h = first;
+    do {
+      if(!mesh.is_border(h)) {
+        // the vertices of face(h) after source(h), in face order
+        for(Analysis_halfedge g = h; mesh.target(g) != mesh.source(h); g = mesh.next(g)) {
+          const Analysis_vertex u = mesh.target(g);
+          if(result.label_of.count(u) == 0)
+            add(u, result.ring[i] + 1, mesh.next(g));
+        }
+      }
+      h = mesh.opposite(mesh.prev(h)); // counter-clockwise around source(h)
+      if(mesh.is_border(mesh.opposite(h)) && mesh.is_border(h))
+        break; // isolated edge: cannot happen in a patch
+    } while(h != first);
+  }
+  return result;
+}
+
+// the faces with every vertex labelled, as label tuples starting at their smallest label
+inline std::set<std::vector<int>> labelled_faces(const Analysis_mesh& mesh, const Labelling& labels)
+{
+  std::set<std::vector<int>> result;
+  for(Analysis_face f : mesh.faces()) {
+    std::vector<int> cycle;
+    bool complete = true;
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const int l = labels.label(v);
+      if(l < 0)
+        complete = false;
+      cycle.push_back(l);
+    }
+    if(!complete)
+      continue;
+    std::size_t smallest = 0;
+    for(std::size_t k = 1; k < cycle.size(); ++k)
+      if(cycle[k] < cycle[smallest])
+        smallest = k;
+    std::vector<int> rotated;
+    for(std::size_t k = 0; k < cycle.size(); ++k)
+      rotated.push_back(cycle[(smallest + k) % cycle.size()]);
+    result.insert(rotated);
+  }
+  return result;
+}
+
+template <class FT>
+using Vertex_stencil = Stencil<Analysis_vertex, FT>;
+
+/*
+ * One host step of the real host and mask on `mesh`: returns the refined
+ * mesh, and the stencil of every new vertex over the old vertices. New
+ * positions are computed in double from the stencils (weights converted).
+ */
+template <class Mask>
+Analysis_mesh refine_recording(const Analysis_mesh& mesh, const Mask& mask,
+                               std::vector<Vertex_stencil<typename Mask::Number_type>>& stencils)
+{
+  using FT = typename Mask::Number_type;
+  using Host = typename Mask::Host;
+  const Host host(mesh);
+  stencils.assign(host.number_of_new_vertices(), Vertex_stencil<FT>());
+  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) { report(stencils[j]); });
+  std::vector<Analysis_mesh::Point> points;
+  points.reserve(stencils.size());
+  for(const auto& stencil : stencils) {
+    double p[3] = {0, 0, 0};
+    for(const auto& term : stencil.terms()) {
+      const double w = CGAL::to_double(term.second);
+      const auto& q = mesh.point(term.first);
+      p[0] += w * q.x();
+      p[1] += w * q.y();
+      p[2] += w * q.z();
+    }
+    points.emplace_back(p[0], p[1], p[2]);
+  }
+  const Face_soup soup = host.faces();
+  Analysis_mesh refined = mesh;
+  refined.collect_garbage();
+  rebuild_mesh(refined, refined.points(), points, soup);
+  return refined;
+}
+
+/*
+ * One analysed step (`Analysis_host_traits::steps` host steps), with the
+ * stencils composed over the steps, and where the centre went: the new
+ * `start` halfedge, found from the stencils alone:
+ * - vertex centre: the new centre is the new vertex whose stencil has the
+ *   largest weight on the old centre among those of the same origin, found
+ *   through `Host::origin()`; interior: of the halfedges leaving it, the one
+ *   to the vertex with the largest weight on the target of the old start
+ *   (unique for every scheme here: the edge point of the old start edge);
+ *   border: the halfedge to the border neighbour with its face on the left;
+ * - face centre: the new central face is the one whose vertices' stencils
+ *   read only the old central face's corners; its start corner is the one
+ *   with the largest weight on the old start corner.
+ */
+template <class Mask>
+struct Analysed_step
+{
+  using FT = typename Mask::Number_type;
+  Analysis_mesh mesh;
+  std::vector<Vertex_stencil<FT>> stencils; // over the vertices of the mesh before the step
+  Analysis_halfedge start;
+};
+
+template <class Mask>
+Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge start, const Mask& mask)
+{
+  using FT = typename Mask::Number_type;
+  using Traits = Analysis_host_traits<typename Mask::Host>;
+  Analysed_step<Mask> result;
+  // the centre and the start neighbour, followed through the host steps
+  std::vector<Analysis_vertex> central; // face centre: corners, from the start corner
+  Analysis_vertex centre = mesh.source(start), first_neighbour = mesh.target(start);
+  const bool border = !Traits::face_centred && mesh.is_border(centre);
+  if(Traits::face_centred) {
+    Analysis_halfedge h = start;
+    do {
+      central.push_back(mesh.source(h));
+      h = mesh.next(h);
+    } while(h != start);
+  }
+  Analysis_mesh current = mesh;
+  std::vector<Vertex_stencil<FT>> composed;
+  for(int step = 0; step < Traits::steps; ++step) {
+    std::vector<Vertex_stencil<FT>> stencils;
+    Analysis_mesh next = refine_recording(current, mask, stencils);
+    if(step == 0) {
+      composed = stencils;
+    } else { // compose: sources of `stencils` are vertices of `current`
+      std::vector<Vertex_stencil<FT>> total(stencils.size());
+      for(std::size_t j = 0; j < stencils.size(); ++j)
+        for(const auto& term : stencils[j].terms())
+          for(const auto& inner : composed[term.first.idx()].terms())
+            total[j].add(inner.first, FT(term.second * inner.second));
+      composed.swap(total);
+    }
+    // where the centre went, in `next`
+    if(!Traits::face_centred) {
+      const typename Mask::Host host(current);
+      Analysis_vertex new_centre;
+      bool found = false;
+      for(std::size_t j = 0; j < stencils.size() && !found; ++j) {
+        const Vertex_origin o = host.origin(j);
+        if(o.kind == Origin_kind::vertex && o.index == centre.idx()) {
+          new_centre = Analysis_vertex(static_cast<Analysis_mesh::size_type>(j));
+          found = true;
+        }
+      }
+      require(found, "the host does not keep the centre vertex");
+      centre = new_centre;
+    }
+    current = std::move(next);
+  }
+  // new start, from the composed stencils (over the vertices of `mesh`)
+  const auto weight_on = [&](Analysis_vertex v, Analysis_vertex source) -> double {
+    return CGAL::to_double(composed[v.idx()].weight(source));
+  };
+  Analysis_halfedge new_start;
+  bool found = false;
+  if(Traits::face_centred) {
+    std::set<Analysis_vertex> corners(central.begin(), central.end());
+    for(Analysis_face f : current.faces()) {
+      bool inside = true;
+      for(Analysis_vertex v : CGAL::vertices_around_face(current.halfedge(f), current)) {
+        for(const auto& term : composed[v.idx()].terms())
+          if(corners.count(term.first) == 0)
+            inside = false;
+      }
+      if(!inside)
+        continue;
+      require(!found, "two faces could be the new central face");
+      found = true;
+      double best = -1e300;
+      for(Analysis_halfedge h : CGAL::halfedges_around_face(current.halfedge(f), current)) {
+        const double w = weight_on(current.source(h), central.front());
+        if(w > best) {
+          best = w;
+          new_start = h;
+        }
+      }
+    }
+  } else if(border) {
+    for(Analysis_halfedge h : CGAL::halfedges_around_source(centre, current))
+      if(!current.is_border(h) && current.is_border(current.opposite(h))) {
+        new_start = h;
+        found = true;
+      }
+  } else {
+    double best = -1e300, second = -1e300;
+    for(Analysis_halfedge h : CGAL::halfedges_around_source(centre, current)) {
+      const double w = weight_on(current.target(h), first_neighbour);
+      if(w > best) {
+        second = best;
+        best = w;
+        new_start = h;
+      } else if(w > second) {
+        second = w;
+      }
+    }
+    found = best > second + 1e-12;
+  }
+  require(found, "the refined neighbourhood cannot be matched with the old one");
+  result.mesh = std::move(current);
+  result.stencils.swap(composed);
+  result.start = new_start;
+  return result;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * A local subdivision matrix, with the neighbourhood it acts on.
+ */
+template <class FT>
+struct Local_subdivision_matrix
+{
+  /// row i: the weights of new neighbourhood vertex i over the old ones,
+  /// both in the canonical order (`ring`); new = S * old
+  Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic> S;
+  /// ring of every neighbourhood vertex, in the canonical order
+  std::vector<int> ring;
+  /// number of rings (face metric) of the neighbourhood
+  int rings = 0;
+  /// false if some new neighbourhood vertex reads an old vertex outside the
+  /// neighbourhood (then S is not a subdivision matrix)
+  bool invariant = false;
+};
+
+namespace internal {
+
+// the matrix of the `rings`-ring neighbourhood; `mask` gives the weights
+template <class Mask>
+Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const Mask& mask, int valence, bool border,
+                                                                          int rings)
+{
+  using FT = typename Mask::Number_type;
+  using Traits = Analysis_host_traits<typename Mask::Host>;
+  const Patch patch = build_patch(Traits::face_size, Traits::face_centred, valence, border, rings + 2);
+  const Labelling old_labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, rings);
+  const Analysed_step<Mask> step = analysed_step(patch.mesh, patch.start, mask);
+  const Labelling new_labels = label_neighbourhood(step.mesh, step.start, Traits::face_centred, rings);
+  require(old_labels.size() == new_labels.size() && old_labels.ring == new_labels.ring &&
+            labelled_faces(patch.mesh, old_labels) == labelled_faces(step.mesh, new_labels),
+          "the refined neighbourhood does not have the connectivity of the old one");
+  Local_subdivision_matrix<FT> result;
+  const Eigen::Index m = static_cast<Eigen::Index>(old_labels.size());
+  result.S.resize(m, m);
+  for(Eigen::Index r = 0; r < m; ++r)
+    for(Eigen::Index c = 0; c < m; ++c)
+      result.S(r, c) = FT(0);
+  result.ring = old_labels.ring;
+  result.rings = rings;
+  result.invariant = true;
+  for(Eigen::Index i = 0; i < m; ++i)
+    for(const auto& term : step.stencils[new_labels.vertex_of[static_cast<std::size_t>(i)].idx()].terms()) {
+      const int j = old_labels.label(term.first);
+      if(j < 0) {
+        if(term.second != FT(0))
+          result.invariant = false;
+        continue;
+      }
+      result.S(i, j) += term.second;
+    }
+  return result;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * The local subdivision matrix of a surface scheme at a vertex of valence
+ * `valence` (`border`: a border vertex with `valence` faces) or, for a dual
+ * scheme (`Dual_split`), at a face with `valence` corners, all other
+ * vertices regular (valence 6 for triangles, 4 for quads; border vertices
+ * with 3 triangles or 2 quads).
+ *
+ * The neighbourhood is built as a real `Analysis_mesh`, one analysed step of
+ * the scheme's own host and mask is run on it, recording the stencil of
+ * every new vertex, and the vertices of the refined mesh that play the roles
+ * of the old neighbourhood vertices are found by reading both meshes in the
+ * same canonical order (see `internal::label_neighbourhood`): row i of S is
+ * the stencil of new vertex i over the old vertices. Nothing is typed in.
+ *
+ * `rings` = 0 picks the smallest ring count r >= 1 whose neighbourhood is
+ * invariant (Loop, sqrt3, and the modified butterfly at n != 6: 1 ring,
+ * n + 1 vertices; Catmull-Clark: 1 ring, 2n + 1; Doo-Sabin: 1 ring around the
+ * face, 4n; butterfly, and the modified butterfly at n = 6: 2 rings, 3n + 1;
+ * border vertices with k faces: k + 2, 2k + 2, ... vertices); a given `rings`
+ * is used as is and the result says whether it is invariant.
+ *
+ * \tparam MaskTemplate a mask class template `MaskTemplate<Mesh, FT>`
+ *         (`Loop_mask`, `Catmull_clark_mask`, ...; an alias template fixes
+ *         further parameters, e.g. `Loop_mask<Mesh, FT, Warren_beta>`)
+ * \tparam FT the number type of the weights: `CGAL::Exact_rational` (default)
+ *         gives the exact matrix where the weights are rational
+ * \param args forwarded to the mask's constructor (e.g. a butterfly tension)
+ * \throws Bad_input for a valence the scheme or the patch cannot have, or if
+ *         no neighbourhood of up to 8 rings is invariant
+ */
+template <template <class, class> class MaskTemplate, class FT = CGAL::Exact_rational, class... Args>
+Local_subdivision_matrix<FT> local_subdivision_matrix(int valence, bool border = false, int rings = 0,
+                                                      const Args&... args)
+{
+  const MaskTemplate<Analysis_mesh, FT> mask(args...);
+  if(rings > 0)
+    return internal::local_matrix_of_rings(mask, valence, border, rings);
+  for(int r = 1; r <= 8; ++r) {
+    Local_subdivision_matrix<FT> result = internal::local_matrix_of_rings(mask, valence, border, r);
+    if(result.invariant)
+      return result;
+  }
+  throw Bad_input("no invariant neighbourhood of up to 8 rings for " + mask.name());
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_ANALYSIS_SURFACE_NEIGHBOURHOOD_H

@@ -1,0 +1,374 @@
+// Eigen-analysis of the surface schemes from their own masks (issue 4):
+// exact local matrices, spectra, closed forms, verdicts, limit masks checked
+// by refinement.
+#include <CGAL/Subdiv/analysis/surface_analysis.h>
+#include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Sqrt3_mask.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using CGAL::Subdiv::Characteristic_map_verdict;
+using CGAL::Subdiv::Surface_analysis;
+using FT = CGAL::Exact_rational;
+
+template <class Mesh, class N>
+using Warren_loop = CGAL::Subdiv::Loop_mask<Mesh, N, CGAL::Subdiv::Warren_beta>;
+
+const double pi = 3.14159265358979323846;
+
+template <template <class, class> class Mask>
+Surface_analysis<FT> analyse(int n, bool boundary = false)
+{
+  return CGAL::Subdiv::analyse_surface_scheme<Mask>(n, boundary);
+}
+
+std::string describe(const Surface_analysis<FT>& a)
+{
+  std::string s = a.scheme + (a.boundary ? " border k=" : " n=") + std::to_string(a.valence) + ": eigenvalues";
+  for(std::size_t i = 0; i < a.eigenvalues.size() && i < 6; ++i)
+    s += " " + std::to_string(a.eigenvalues[i].real()) + (a.eigenvalues[i].imag() != 0 ? "+i" : "");
+  s += ", characteristic map " + CGAL::Subdiv::to_string(a.characteristic_map);
+  return s;
+}
+
+// what every analysis must satisfy: rows sum to 1, 1 simple and dominant,
+// the limit mask sums to 1 and predicts the limit of a random neighbourhood
+void expect_consistent(const Surface_analysis<FT>& a)
+{
+  SCOPED_TRACE(describe(a));
+  EXPECT_TRUE(a.rows_sum_to_one);
+  EXPECT_TRUE(a.one_is_simple_and_dominant);
+  ASSERT_EQ(a.limit_mask.size(), static_cast<std::size_t>(a.matrix.rows()));
+  FT sum(0);
+  for(const FT& w : a.limit_mask)
+    sum += w;
+  EXPECT_EQ(sum, FT(1));
+  // the left eigenvector: l S = l, exactly
+  for(Eigen::Index c = 0; c < a.matrix.cols(); ++c) {
+    FT lS(0);
+    for(Eigen::Index r = 0; r < a.matrix.rows(); ++r)
+      lS += a.limit_mask[static_cast<std::size_t>(r)] * a.matrix(r, c);
+    EXPECT_EQ(lS, a.limit_mask[static_cast<std::size_t>(c)]);
+  }
+  // verification by refinement: the real host on the whole patch, then cropped
+  EXPECT_GE(a.host_levels, 3);
+  EXPECT_LE(a.host_error, 2 * a.host_lambda_power + 1e-14);
+  EXPECT_GE(a.cropped_levels, 1);
+  EXPECT_GE(a.limit_error, 0.0);
+  EXPECT_LT(a.limit_error, 1e-10);
+}
+
+// ---------------------------------------------------------------- Loop
+
+TEST(SurfaceAnalysisLoop, exact_matrix_is_made_of_the_mask_weights)
+{
+  for(int n = 3; n <= 8; ++n) {
+    SCOPED_TRACE("valence " + std::to_string(n));
+    const auto local = CGAL::Subdiv::local_subdivision_matrix<Warren_loop>(n);
+    ASSERT_TRUE(local.invariant);
+    ASSERT_EQ(local.rings, 1);
+    ASSERT_EQ(local.S.rows(), n + 1);
+    const FT beta = CGAL::Subdiv::Warren_beta::beta<FT>(n);
+    EXPECT_EQ(local.S(0, 0), FT(1) - FT(n) * beta);
+    for(int i = 1; i <= n; ++i) {
+      EXPECT_EQ(local.S(0, i), beta);
+      FT row_sum(0);
+      for(int j = 0; j <= n; ++j) {
+        row_sum += local.S(i, j);
+        const int d = ((j - i) % n + n) % n; // ring 1: v_0..v_{n-1} counter-clockwise
+        FT expected(0);
+        if(j == 0 || j == i)
+          expected = FT(3) / FT(8);
+        else if(d == 1 || d == n - 1)
+          expected = FT(1) / FT(8);
+        if(n == 3 && j != 0 && j != i) // both other ring vertices are opposite vertices
+          expected = FT(1) / FT(8);
+        EXPECT_EQ(local.S(i, j), expected) << "row " << i << " column " << j;
+      }
+      EXPECT_EQ(row_sum, FT(1));
+    }
+  }
+}
+
+TEST(SurfaceAnalysisLoop, exactness_follows_the_weights)
+{
+  for(int n = 3; n <= 8; ++n) {
+    const auto loop = analyse<CGAL::Subdiv::Loop_mask>(n);
+    EXPECT_EQ(loop.exact, n == 3 || n == 4 || n == 6) << n; // Loop's beta is rational at 3, 4, 6 only
+    const auto warren = analyse<Warren_loop>(n);
+    EXPECT_TRUE(warren.exact) << n;
+  }
+}
+
+TEST(SurfaceAnalysisLoop, subdominant_eigenvalue_limit_mask_and_verdict)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Loop_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_NEAR(a.subdominant.real(), 3.0 / 8 + std::cos(2 * pi / n) / 4, 1e-12);
+    EXPECT_EQ(a.subdominant.imag(), 0.0);
+    EXPECT_EQ(a.subdominant_multiplicity, 2);
+    EXPECT_TRUE(a.c1_necessary);
+    EXPECT_TRUE(a.extended_spectrum_ok);
+    EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::regular_injective);
+    EXPECT_TRUE(a.c1);
+    // limit mask: centre 1 - n chi, neighbours chi, chi = 1 / (3 / (8 beta) + n)
+    const double beta = CGAL::Subdiv::Loop_beta::beta<double>(n);
+    const double chi = 1 / (3 / (8 * beta) + n);
+    EXPECT_NEAR(CGAL::to_double(a.limit_mask_centre()), 1 - n * chi, 1e-12);
+    for(int i = 1; i <= n; ++i)
+      EXPECT_NEAR(CGAL::to_double(a.limit_mask[i]), chi, 1e-12);
+    // tangent masks: cos(2 pi i / n) and sin(2 pi i / n) on ring 1, up to scale
+    const double scale = a.tangent_mask[0][1];
+    ASSERT_NE(scale, 0.0);
+    EXPECT_NEAR(a.tangent_mask[0][0], 0.0, 1e-12);
+    for(int i = 1; i <= n; ++i) {
+      EXPECT_NEAR(a.tangent_mask[0][i] / scale, std::cos(2 * pi * (i - 1) / n), 1e-9);
+      EXPECT_NEAR(a.tangent_mask[1][i] / scale, std::sin(2 * pi * (i - 1) / n), 1e-9);
+    }
+  }
+}
+
+TEST(SurfaceAnalysisLoop, rational_eigenvalues_are_confirmed_exactly)
+{
+  const auto a = analyse<CGAL::Subdiv::Loop_mask>(6); // 1, 1/2 (x2), 1/4 (x3), 1/8
+  ASSERT_TRUE(a.exact);
+  EXPECT_EQ(a.eigenvalues[1], std::complex<double>(0.5, 0));
+  EXPECT_EQ(a.eigenvalues[2], std::complex<double>(0.5, 0));
+  bool half = false;
+  for(const auto& e : a.exact_eigenvalues)
+    if(e.first == FT(1) / FT(2)) {
+      half = true;
+      EXPECT_EQ(e.second, 2);
+    }
+  EXPECT_TRUE(half);
+  const auto three = analyse<CGAL::Subdiv::Loop_mask>(3); // 1, 1/4 (x2), 1/16
+  EXPECT_EQ(three.eigenvalues[3], std::complex<double>(1.0 / 16, 0));
+}
+
+TEST(SurfaceAnalysisLoop, warren_limit_mask_is_exact)
+{
+  for(int n = 3; n <= 12; ++n) {
+    const auto a = analyse<Warren_loop>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    // chi = 1 / (3 / (8 beta) + n): 1/5 at n = 3, 1 / (2n) otherwise
+    const FT centre = n == 3 ? FT(2) / FT(5) : FT(1) / FT(2);
+    EXPECT_EQ(a.limit_mask_centre(), centre);
+    for(int i = 1; i <= n; ++i)
+      EXPECT_EQ(a.limit_mask[i], (FT(1) - centre) / FT(n));
+    EXPECT_TRUE(a.c1);
+  }
+}
+
+// Border vertices with k faces, the border a cubic B-spline (Hoppe et al.'s
+// rules, as in CGAL and OpenSubdiv). Computed verdicts: C1 for k = 1..5; at
+// k = 6 the interior eigenvalue 3/8 + cos(pi/3)/4 = 1/2 ties with the border's
+// 1/2 below lambda_1 (no gap); for k >= 7 the characteristic map folds. The
+// literature reports this failure of the standard boundary rules at border
+// vertices with many faces (Biermann, Levin, Zorin 2000, who therefore modify
+// the rules).
+TEST(SurfaceAnalysisLoop, border_vertices)
+{
+  for(int k = 1; k <= 8; ++k) {
+    const auto a = analyse<CGAL::Subdiv::Loop_mask>(k, true);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_TRUE(a.exact);
+    // the border is a cubic B-spline: limit 2/3 centre, 1/6 per border neighbour
+    EXPECT_EQ(a.limit_mask_centre(), FT(2) / FT(3));
+    EXPECT_EQ(a.limit_mask[1], FT(1) / FT(6));
+    EXPECT_EQ(a.limit_mask[static_cast<std::size_t>(k + 1)], FT(1) / FT(6));
+    // the interior eigenvalue 3/8 + cos(pi/k)/4 passes the border's 1/2 at k = 4
+    const double interior = 3.0 / 8 + std::cos(pi / k) / 4;
+    EXPECT_NEAR(a.subdominant.real(), (std::max)(0.5, interior), 1e-12);
+    EXPECT_EQ(a.c1, k <= 5);
+    if(k == 6)
+      EXPECT_FALSE(a.c1_necessary);
+    if(k >= 7)
+      EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_regular);
+  }
+}
+
+// ---------------------------------------------------------------- Catmull-Clark
+
+TEST(SurfaceAnalysisCatmullClark, limit_mask_and_subdominant_eigenvalue)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Catmull_clark_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_TRUE(a.exact);
+    ASSERT_EQ(a.matrix.rows(), 2 * n + 1);
+    // n^2 at the centre, 4 per edge neighbour (odd labels), 1 per face neighbour, over n(n+5)
+    const FT d(n * (n + 5));
+    EXPECT_EQ(a.limit_mask_centre(), FT(n * n) / d);
+    for(int i = 1; i <= 2 * n; ++i)
+      EXPECT_EQ(a.limit_mask[i], (i % 2 == 1 ? FT(4) : FT(1)) / d) << "label " << i;
+    // [Doo and Sabin 1978; Ball and Storry 1988]
+    const double c = std::cos(2 * pi / n);
+    EXPECT_NEAR(a.subdominant.real(), (5 + c + std::cos(pi / n) * std::sqrt(18 + 2 * c)) / 16, 1e-12);
+    EXPECT_EQ(a.subdominant_multiplicity, 2);
+    EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::regular_injective);
+    EXPECT_TRUE(a.c1);
+  }
+  const auto regular = analyse<CGAL::Subdiv::Catmull_clark_mask>(4);
+  EXPECT_EQ(regular.eigenvalues[1], std::complex<double>(0.5, 0)); // confirmed exactly
+}
+
+// Border (cubic B-spline border, as CGAL and OpenSubdiv): computed verdicts.
+// k = 1 (a corner with the smooth rule): 1/2 is simple, and 1/4 ties with
+// the next eigenvalue (no gap); k = 2 (regular), 3: C1; k = 4: an eigenvalue
+// of the outer rings passes lambda_2; k >= 5: the characteristic map folds.
+TEST(SurfaceAnalysisCatmullClark, border_vertices)
+{
+  for(int k = 1; k <= 8; ++k) {
+    const auto a = analyse<CGAL::Subdiv::Catmull_clark_mask>(k, true);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_EQ(a.limit_mask_centre(), FT(2) / FT(3));
+    EXPECT_EQ(a.c1, k == 2 || k == 3);
+    if(k == 1)
+      EXPECT_FALSE(a.c1_necessary);
+    if(k == 4)
+      EXPECT_FALSE(a.extended_spectrum_ok);
+    if(k >= 5)
+      EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_regular);
+  }
+}
+
+// ---------------------------------------------------------------- Doo-Sabin
+
+TEST(SurfaceAnalysisDooSabin, face_eigenvalues_and_limit_mask)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Doo_sabin_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_TRUE(a.face_centred);
+    ASSERT_EQ(a.matrix.rows(), 4 * n);
+    EXPECT_EQ(a.exact, n == 3 || n == 4 || n == 6);
+    // the central n-gon alone is invariant: its limit is its centroid
+    for(int i = 0; i < 4 * n; ++i)
+      EXPECT_NEAR(CGAL::to_double(a.limit_mask[i]), i < n ? 1.0 / n : 0.0, 1e-15);
+    if(a.exact)
+      EXPECT_EQ(a.limit_mask_centre(), FT(1) / FT(n));
+    // 1, 1/2, 1/2, 1/4 ... (the weights were designed for it)
+    EXPECT_NEAR(a.eigenvalues[1].real(), 0.5, 1e-12);
+    EXPECT_NEAR(a.eigenvalues[2].real(), 0.5, 1e-12);
+    EXPECT_NEAR(std::abs(a.eigenvalues[3]), 0.25, 1e-6); // a multiple eigenvalue: found to ~eps^(1/3) when not exact
+    EXPECT_TRUE(a.c1);
+  }
+  const auto quad = analyse<CGAL::Subdiv::Doo_sabin_mask>(4);
+  const std::complex<double> expected[4] = {1, 0.5, 0.5, 0.25};
+  for(int i = 0; i < 4; ++i)
+    EXPECT_EQ(quad.eigenvalues[i], expected[i]); // confirmed exactly
+}
+
+// ---------------------------------------------------------------- butterfly family
+
+// The 1990 butterfly is known not to be C1 at valence 3 and above 7
+// [Zorin, Schroeder, Sweldens 1996]; the analysis finds exactly that: at
+// n = 3 the eigenvalue 1/4 has multiplicity 7, for n >= 8 the characteristic
+// map is not injective.
+TEST(SurfaceAnalysisButterfly, known_failures)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Butterfly_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_TRUE(a.exact);
+    EXPECT_EQ(a.rings, 2);
+    EXPECT_EQ(a.limit_mask_centre(), FT(1)); // interpolating
+    EXPECT_EQ(a.host_error, 0.0);
+    EXPECT_EQ(a.c1, n >= 4 && n <= 7);
+    if(n == 3) {
+      EXPECT_EQ(a.subdominant, std::complex<double>(0.25, 0));
+      EXPECT_EQ(a.subdominant_multiplicity, 7);
+      EXPECT_FALSE(a.c1_necessary);
+    }
+    if(n >= 8) {
+      EXPECT_TRUE(a.c1_necessary);
+      EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_injective);
+    }
+  }
+}
+
+// The modified butterfly is C1 at every valence [Zorin, Schroeder, Sweldens
+// 1996]: its extraordinary rule has the eigenvalues 1, 1/2, 1/2, 1/4, ...
+TEST(SurfaceAnalysisModifiedButterfly, smooth_everywhere)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Modified_butterfly_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_EQ(a.exact, n == 3 || n == 4 || n == 6);
+    EXPECT_NEAR(a.subdominant.real(), 0.5, 1e-12);
+    EXPECT_EQ(a.subdominant_multiplicity, 2);
+    EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::regular_injective);
+    EXPECT_TRUE(a.c1);
+  }
+}
+
+// Border rules of both butterflies (four-point border): C1 at k = 2 and at the
+// regular k = 3 only; k = 1: 1/2 simple with no gap; k = 4, 5: the map folds;
+// k = 6: 1/2 is a double defective eigenvalue; k >= 7: the map overlaps.
+TEST(SurfaceAnalysisButterfly, border_vertices)
+{
+  for(int k = 1; k <= 8; ++k) {
+    const auto plain = analyse<CGAL::Subdiv::Butterfly_mask>(k, true);
+    const auto modified = analyse<CGAL::Subdiv::Modified_butterfly_mask>(k, true);
+    for(const auto* a : {&plain, &modified}) {
+      SCOPED_TRACE(describe(*a));
+      expect_consistent(*a);
+      EXPECT_EQ(a->c1, k == 2 || k == 3);
+      if(k == 1)
+        EXPECT_FALSE(a->c1_necessary);
+      if(k == 4 || k == 5 || k == 6)
+        EXPECT_EQ(a->characteristic_map, Characteristic_map_verdict::not_regular);
+      if(k >= 7)
+        EXPECT_EQ(a->characteristic_map, Characteristic_map_verdict::not_injective);
+    }
+  }
+}
+
+// ---------------------------------------------------------------- sqrt3
+
+// Two steps (the 1-to-9 split) make one analysed step: the subdominant
+// eigenvalue is Kobbelt's (2 + 2 cos(2 pi / n)) / 9 [Kobbelt 2000].
+TEST(SurfaceAnalysisSqrt3, two_steps_are_smooth)
+{
+  for(int n = 3; n <= 16; ++n) {
+    const auto a = analyse<CGAL::Subdiv::Sqrt3_mask>(n);
+    SCOPED_TRACE(describe(a));
+    expect_consistent(a);
+    EXPECT_EQ(a.exact, n == 3 || n == 4 || n == 6);
+    EXPECT_NEAR(a.subdominant.real(), (2 + 2 * std::cos(2 * pi / n)) / 9, 1e-12);
+    EXPECT_EQ(a.subdominant_multiplicity, 2);
+    EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::regular_injective);
+    EXPECT_TRUE(a.c1);
+  }
+  EXPECT_THROW(analyse<CGAL::Subdiv::Sqrt3_mask>(4, true), CGAL::Subdiv::Bad_input);
+}
+
+// ---------------------------------------------------------------- bad input
+
+TEST(SurfaceAnalysis, bad_valences)
+{
+  EXPECT_THROW(analyse<CGAL::Subdiv::Loop_mask>(2), CGAL::Subdiv::Bad_input);
+  EXPECT_THROW(analyse<CGAL::Subdiv::Loop_mask>(0, true), CGAL::Subdiv::Bad_input);
+  EXPECT_THROW(analyse<CGAL::Subdiv::Doo_sabin_mask>(4, true), CGAL::Subdiv::Bad_input);
+}
+
+} // namespace
