@@ -89,25 +89,12 @@ public:
   template <class Accumulator>
   void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
   {
-    // one walk around v gives its valence and, on the border, its border halfedge
-    int n = 0;
-    halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
-      ++n;
-      if(CGAL::is_border(h, mesh))
-        border_in = h;
-    }
-    if(border_in != boost::graph_traits<Mesh>::null_halfedge() && n == 2 &&
-       m_corners == Border_corners::sharp) { // corner
-      acc.add(v, FT(1));
+    const internal::Vertex_walk<Mesh> walk(v, mesh);
+    if(walk.on_border()) {
+      internal::border_vertex_rule<FT>(v, walk, m_corners, mesh, acc);
       return;
     }
-    if(border_in != boost::graph_traits<Mesh>::null_halfedge()) { // border vertex
-      acc.add(v, FT(6) / FT(8));
-      acc.add(source(border_in, mesh), FT(1) / FT(8));
-      acc.add(target(next(border_in, mesh), mesh), FT(1) / FT(8));
-      return;
-    }
+    const int n = walk.valence;
     // (F + 2R + (n-3) v) / n with F = (1/n) sum of face points and
     // 2R = (1/n) sum (v + u) over the neighbours u
     // v gets (n-3)/n from itself and n * 1/n^2 from its edge midpoints
