@@ -201,6 +201,29 @@ TEST(Sqrt3, the_host_reads_the_border_phase_from_the_mesh)
   S::sqrt3_subdivision(reversed);
   EXPECT_TRUE(S::Sqrt3_split<Mesh>(reversed).refines_border());
 
+  // a closed component beside the bordered one does not disturb the phase
+  Mesh both = read<Mesh>("cgal/mesh_with_border.off");
+  {
+    const Mesh tetrahedron = read<Mesh>("cgal/tetrahedron.off");
+    std::vector<Mesh::Vertex_index> copy;
+    for(auto v : vertices(tetrahedron))
+      copy.push_back(both.add_vertex(tetrahedron.point(v)));
+    for(auto f : faces(tetrahedron)) {
+      std::vector<Mesh::Vertex_index> corners;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tetrahedron), tetrahedron))
+        corners.push_back(copy[v.idx()]);
+      both.add_face(corners);
+    }
+  }
+  const std::size_t both_border = border_edges(both);
+  Mesh both_once = both;
+  S::sqrt3_subdivision(both);
+  EXPECT_TRUE(S::Sqrt3_split<Mesh>(both).refines_border());
+  S::sqrt3_subdivision(both);
+  S::sqrt3_subdivision(both_once, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(border_edges(both), 3 * both_border);
+  EXPECT_TRUE(same_mesh(both, both_once));
+
   // a single triangle: rested, then its three edges split in three
   Mesh triangle;
   triangle.add_face(triangle.add_vertex(K::Point_3(0, 0, 0)), triangle.add_vertex(K::Point_3(3, 0, 0)),

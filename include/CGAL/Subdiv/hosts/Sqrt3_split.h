@@ -20,104 +20,61 @@ namespace internal {
 /*
  * Whether the border of `mesh` is due to be refined by the next sqrt3 step,
  * i.e. whether the mesh is the output of a sqrt3 step that left its border
- * alone (a "resting" step). Such a mesh is recognised by its connectivity
- * alone: its vertices split into the old vertices (every border vertex among
- * them) and the face points, such that
+ * alone (a "resting" step). Such a step puts its V_old old vertices first and
+ * its face points last, and the three new faces of old face k at positions
+ * 3k, 3k+1, 3k+2, each with face point V_old + k among its corners. So, with
+ * V and F the numbers of vertices and faces now, F is a multiple of 3, the
+ * vertices from V_old = V - F/3 on are the face points, and
+ *   - face i has the face point V_old + i/3 (rounded down) among its corners,
+ *     and at least one old vertex;
+ *   - every border vertex is old;
  *   - no interior edge joins two old vertices (every old interior edge was
- *     flipped), so every neighbour of an old vertex across an interior edge is
- *     a face point;
- *   - every triangle has at least one old vertex;
+ *     flipped);
  *   - every face point has exactly three old neighbours (the corners of its
- *     old face), and there is one face point per three faces;
- *   - the elements are in the order a sqrt3 step gives them: with V and F
- *     the numbers of vertices and faces, face i (in iteration order) has the
- *     face point V - F/3 + i/3 (rounded down) among its corners.
- * Starting from the border vertices, these rules determine the split (a
- * breadth-first labelling); the mesh is "pending" when the labelling reaches
- * every vertex of every component with a border and satisfies all of them.
- * Components without border are ignored (their refinement has no phase).
- * The order condition keeps meshes that merely have the shape of a resting
- * step's output (CGAL's hedra_open.off, an octahedron without two faces, is
- * one) from being taken for one.
+ *     old face).
+ * The test reads the connectivity and the order of the elements, nothing
+ * else, in one pass over the edges and one over the faces. The order part
+ * keeps meshes that merely have the connectivity of a resting step's output
+ * (CGAL's hedra_open.off, an octahedron without two faces, is one: two
+ * triangles after a resting step) from being taken for one.
  */
 template <class Mesh, class Numbering>
 bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
 {
-  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
-  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
-  enum : char { unknown = 0, old_vertex = 1, face_point = 2 };
-
-  std::vector<char> label(num_vertices(mesh), unknown);
-  std::vector<vertex_descriptor> queue;
-  for(halfedge_descriptor h : halfedges(mesh))
-    if(is_border(h, mesh) && label[number(target(h, mesh))] == unknown) {
-      label[number(target(h, mesh))] = old_vertex;
-      queue.push_back(target(h, mesh));
-    }
-  if(queue.empty())
+  const std::size_t vertex_count = num_vertices(mesh), face_count = num_faces(mesh);
+  if(face_count % 3 != 0 || vertex_count < face_count / 3)
     return false;
-  const auto set = [&](vertex_descriptor v, char value) -> bool {
-    char& l = label[number(v)];
-    if(l == unknown) {
-      l = value;
-      queue.push_back(v);
-      return true;
-    }
-    return l == value;
-  };
-  for(std::size_t i = 0; i < queue.size(); ++i) {
-    const vertex_descriptor v = queue[i];
-    const bool is_old = label[number(v)] == old_vertex;
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
-      // h runs from u to v; its face (if any) is (u, v, w)
-      const vertex_descriptor u = source(h, mesh);
-      if(is_old) {
-        if(!is_border_edge(h, mesh) && !set(u, face_point))
-          return false;
-        continue;
-      }
-      if(is_border(h, mesh))
+  const std::size_t first_face_point = vertex_count - face_count / 3;
+  std::vector<unsigned char> old_neighbours(face_count / 3, 0);
+  for(auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh);
+    const std::size_t a = number(source(h, mesh)), b = number(target(h, mesh));
+    const bool a_old = a < first_face_point, b_old = b < first_face_point;
+    if(is_border_edge(h, mesh)) {
+      if(!a_old || !b_old)
         return false; // a face point on the border
-      if(label[number(u)] == face_point && !set(target(next(h, mesh), mesh), old_vertex))
-        return false; // a triangle without old vertex
+    } else if(a_old && b_old) {
+      return false; // an unflipped old interior edge
+    } else if(a_old != b_old) {
+      unsigned char& count = old_neighbours[(a_old ? b : a) - first_face_point];
+      if(++count > 3)
+        return false;
     }
   }
-  // every face of the labelled components is labelled, keeps the rules, and
-  // has its face point where a sqrt3 step puts it
-  const std::size_t face_count = num_faces(mesh);
-  if(face_count % 3 != 0 || num_vertices(mesh) < face_count / 3)
-    return false;
-  const std::size_t first_face_point = num_vertices(mesh) - face_count / 3;
-  std::size_t labelled_faces = 0, face_points = 0;
+  for(unsigned char count : old_neighbours)
+    if(count != 3)
+      return false;
   for(auto f : faces(mesh)) {
-    const halfedge_descriptor h = halfedge(f, mesh);
+    const auto h = halfedge(f, mesh);
     const std::size_t corner[3] = {number(source(h, mesh)), number(target(h, mesh)),
                                    number(target(next(h, mesh), mesh))};
-    const char a = label[corner[0]], b = label[corner[1]], c = label[corner[2]];
-    if(a == unknown && b == unknown && c == unknown)
-      continue;
-    if(a == unknown || b == unknown || c == unknown)
-      return false;
-    if(a != old_vertex && b != old_vertex && c != old_vertex)
-      return false;
     const std::size_t expected = first_face_point + number(f) / 3;
     if(corner[0] != expected && corner[1] != expected && corner[2] != expected)
       return false;
-    if(label[expected] != face_point)
-      return false;
-    ++labelled_faces;
-  }
-  for(vertex_descriptor v : vertices(mesh)) {
-    if(label[number(v)] != face_point)
-      continue;
-    ++face_points;
-    int old_neighbours = 0;
-    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
-      old_neighbours += label[number(u)] == old_vertex;
-    if(old_neighbours != 3)
+    if(corner[0] >= first_face_point && corner[1] >= first_face_point && corner[2] >= first_face_point)
       return false;
   }
-  return 3 * face_points == labelled_faces;
+  return true;
 }
 
 } // namespace internal
