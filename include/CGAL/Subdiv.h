@@ -18,6 +18,7 @@
 #include <CGAL/Subdiv/curves/refine_polyline.h>
 #include <CGAL/Subdiv/analysis/curve_analysis.h>
 #include <CGAL/Subdiv/analysis/surface_analysis.h>
+#include <CGAL/Subdiv/analysis/limit.h>
 
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Subdiv/surface_subdivision.h>

@@ -1,0 +1,558 @@
+// Limit positions, limit normals and displacement (issue 4, limit part): the
+// masks come from the analysis, mapped onto the mesh by the same labelling walk.
+#include <CGAL/Subdiv/analysis/limit.h>
+#include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
+#include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
+#include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Sqrt3_mask.h>
+#include <CGAL/Subdiv/surface_subdivision.h>
+
+#include "mesh_test_utils.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SD = CGAL::Subdiv;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using QK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using Exact_mesh = CGAL::Surface_mesh<QK::Point_3>;
+using Q = CGAL::Exact_rational;
+using V = Mesh::Vertex_index;
+
+template <class M, class N>
+using Warren_loop = SD::Loop_mask<M, N, SD::Warren_beta>;
+
+const double pi = 3.14159265358979323846;
+
+template <class SM>
+SM mesh_of(const std::vector<std::array<double, 3>>& points, const std::vector<std::vector<int>>& faces)
+{
+  using P = typename SM::Point;
+  SM mesh;
+  std::vector<typename SM::Vertex_index> v;
+  for(const auto& p : points)
+    v.push_back(mesh.add_vertex(P(p[0], p[1], p[2])));
+  for(const auto& f : faces) {
+    std::vector<typename SM::Vertex_index> corners;
+    for(int i : f)
+      corners.push_back(v[static_cast<std::size_t>(i)]);
+    EXPECT_NE(mesh.add_face(corners), SM::null_face());
+  }
+  return mesh;
+}
+
+template <class SM = Mesh>
+SM tetrahedron()
+{
+  return mesh_of<SM>({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}});
+}
+
+template <class SM = Mesh>
+SM cube()
+{
+  return mesh_of<SM>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                     {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+}
+
+// the icosahedron, vertices on the unit sphere, faces outward
+Mesh icosahedron()
+{
+  const double t = (1 + std::sqrt(5.0)) / 2, s = 1 / std::sqrt(1 + t * t);
+  std::vector<std::array<double, 3>> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                          {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for(auto& q : p)
+    for(double& c : q)
+      c *= s;
+  return mesh_of<Mesh>(p, {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                           {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                           {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
+}
+
+// an n x m grid in the plane z = 0, counter-clockwise seen from +z; triangles
+// (each square split along alternating diagonals, so that valences vary) or quads
+template <class SM = Mesh>
+SM grid(int n, int m, bool triangles)
+{
+  std::vector<std::array<double, 3>> points;
+  for(int j = 0; j <= m; ++j)
+    for(int i = 0; i <= n; ++i)
+      points.push_back({double(i), double(j), 0});
+  std::vector<std::vector<int>> faces;
+  const auto id = [&](int i, int j) { return j * (n + 1) + i; };
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if(!triangles)
+        faces.push_back({a, b, c, d});
+      else if((i + j) % 2 == 0) {
+        faces.push_back({a, b, c});
+        faces.push_back({a, c, d});
+      } else {
+        faces.push_back({a, b, d});
+        faces.push_back({b, c, d});
+      }
+    }
+  return mesh_of<SM>(points, faces);
+}
+
+double distance(const K::Point_3& a, const K::Point_3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+
+std::vector<K::Point_3> points_of(const Mesh& mesh)
+{
+  return std::vector<K::Point_3>(mesh.points().begin(), mesh.points().end());
+}
+
+std::vector<K::Vector_3> normals_of(const Mesh& mesh, const std::function<void(const Mesh&, Mesh::Property_map<V, K::Vector_3>)>& compute)
+{
+  Mesh copy = mesh;
+  auto map = copy.add_property_map<V, K::Vector_3>("v:n", K::Vector_3(0, 0, 0)).first;
+  compute(copy, map);
+  std::vector<K::Vector_3> out;
+  for(V v : copy.vertices())
+    out.push_back(map[v]);
+  return out;
+}
+
+template <template <class, class> class M>
+std::vector<K::Vector_3> limit_normals_of(const Mesh& mesh)
+{
+  return normals_of(mesh, [](const Mesh& m, Mesh::Property_map<V, K::Vector_3> map) { SD::limit_normals<M>(m, map); });
+}
+
+// ------------------------------------------------------------------ masks
+
+// the masks are those of the analysis: closed forms of Loop and Catmull-Clark,
+// border limit 1/6, 2/3, 1/6; the labelling walk reproduces the analysis' labels
+// (checked inside compute_limit_masks, which throws otherwise)
+TEST(LimitMasks, come_from_the_analysis)
+{
+  const auto warren = SD::make_limit_evaluator<Warren_loop>();
+  for(int n = 3; n <= 10; ++n) {
+    const SD::Limit_masks& m = warren.masks(n, false);
+    EXPECT_EQ(m.rings, 1);
+    ASSERT_EQ(m.limit.size(), static_cast<std::size_t>(n + 1));
+    const Q centre = n == 3 ? Q(2) / Q(5) : Q(1) / Q(2);
+    EXPECT_EQ(m.limit[0], centre);
+    for(int i = 1; i <= n; ++i)
+      EXPECT_EQ(m.limit[static_cast<std::size_t>(i)], (Q(1) - centre) / Q(n));
+    EXPECT_TRUE(m.tangents);
+  }
+  const auto cc = SD::make_limit_evaluator<SD::Catmull_clark_mask>();
+  for(int n = 3; n <= 8; ++n) {
+    const SD::Limit_masks& m = cc.masks(n, false);
+    const Q d(n * (n + 5));
+    EXPECT_EQ(m.limit[0], Q(n * n) / d);
+    for(int i = 1; i <= 2 * n; ++i)
+      EXPECT_EQ(m.limit[static_cast<std::size_t>(i)], (i % 2 == 1 ? Q(4) : Q(1)) / d);
+    EXPECT_TRUE(m.tangents);
+  }
+  for(int k = 1; k <= 5; ++k) {
+    const SD::Limit_masks& m = cc.masks(k, true);
+    EXPECT_EQ(m.limit[0], Q(2) / Q(3));
+    const SD::Limit_masks& l = warren.masks(k, true);
+    EXPECT_EQ(l.limit[0], Q(2) / Q(3));
+    EXPECT_EQ(l.limit[1], Q(1) / Q(6));
+    EXPECT_EQ(l.limit[static_cast<std::size_t>(k + 1)], Q(1) / Q(6));
+  }
+  // interpolating schemes: the limit mask is the centre's unit vector
+  const auto butterfly = SD::make_limit_evaluator<SD::Butterfly_mask>();
+  for(int n : {4, 5, 6, 7}) {
+    const SD::Limit_masks& m = butterfly.masks(n, false);
+    EXPECT_EQ(m.rings, 2);
+    EXPECT_EQ(m.limit[0], Q(1));
+    for(std::size_t i = 1; i < m.limit.size(); ++i)
+      EXPECT_EQ(m.limit[i], Q(0));
+    EXPECT_TRUE(m.tangents);
+  }
+  // the butterfly at n = 3 has no separated subdominant pair (1/4, 7 times): normals fall back
+  EXPECT_FALSE(butterfly.masks(3, false).tangents);
+}
+
+// ------------------------------------------------------------------ limit positions
+
+// after L more levels an old vertex is within |lambda_1|^L (times the size of
+// its neighbourhood) of its limit: lambda_1 = 1/2 for valence 6 and 3/8 +
+// cos(2 pi / 5) / 4 < 1/2 for valence 5
+TEST(ProjectToLimit, loop_agrees_with_deep_refinement)
+{
+  Mesh mesh = icosahedron();
+  SD::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Loop_mask>(limit);
+  const std::size_t old = mesh.number_of_vertices();
+  const double edge = distance(mesh.point(V(0)), mesh.point(mesh.source(mesh.halfedge(V(0)))));
+  Mesh deep = mesh;
+  for(int L = 1; L <= 6; ++L) {
+    SD::loop_subdivision(deep, CGAL::parameters::number_of_iterations(1));
+    double worst = 0;
+    for(std::size_t i = 0; i < old; ++i)
+      worst = (std::max)(worst, distance(deep.point(V(static_cast<Mesh::size_type>(i))), limit.point(V(static_cast<Mesh::size_type>(i)))));
+    EXPECT_LE(worst, 2 * edge * std::pow(0.5, L)) << "L = " << L;
+    if(L == 6)
+      EXPECT_GT(worst, 0.0);
+  }
+}
+
+TEST(ProjectToLimit, catmull_clark_agrees_with_deep_refinement)
+{
+  Mesh mesh = cube();
+  SD::catmull_clark_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  const std::size_t old = mesh.number_of_vertices();
+  Mesh deep = mesh;
+  // valence 3: lambda_1 = (5 + c + cos(pi/3) sqrt(18 + 2c)) / 16 with c = cos(2 pi / 3)
+  const double c = std::cos(2 * pi / 3), lambda = (std::max)(0.5, (5 + c + std::cos(pi / 3) * std::sqrt(18 + 2 * c)) / 16);
+  for(int L = 1; L <= 5; ++L) {
+    SD::catmull_clark_subdivision(deep, CGAL::parameters::number_of_iterations(1));
+    double worst = 0;
+    for(std::size_t i = 0; i < old; ++i)
+      worst = (std::max)(worst, distance(deep.point(V(static_cast<Mesh::size_type>(i))), limit.point(V(static_cast<Mesh::size_type>(i)))));
+    EXPECT_LE(worst, std::pow(lambda, L)) << "L = " << L; // the cube's level-1 edges are 1/2 long
+  }
+}
+
+// the limit point of a vertex does not change under refinement: exactly, in
+// exact arithmetic, at every vertex of the coarser mesh (also those next to
+// extraordinary vertices, evaluated on a further refined copy)
+template <template <class, class> class M, class Refine>
+void expect_invariant_under_refinement(Exact_mesh mesh, const Refine& refine)
+{
+  const auto evaluator = SD::make_limit_evaluator<M>();
+  refine(mesh);
+  Exact_mesh a = mesh;
+  evaluator.project_to_limit(a);
+  Exact_mesh finer = mesh;
+  refine(finer);
+  evaluator.project_to_limit(finer);
+  for(auto v : mesh.vertices())
+    EXPECT_EQ(a.point(v), finer.point(v)) << "vertex " << v.idx();
+}
+
+TEST(ProjectToLimit, exactly_invariant_under_refinement)
+{
+  expect_invariant_under_refinement<Warren_loop>(tetrahedron<Exact_mesh>(), [](Exact_mesh& m) {
+    SD::loop_warren_subdivision(m);
+  });
+  expect_invariant_under_refinement<SD::Catmull_clark_mask>(cube<Exact_mesh>(), [](Exact_mesh& m) {
+    SD::catmull_clark_subdivision(m);
+  });
+  // Loop's 1987 beta: rational at 3, 4, 6 (the tetrahedron and its refinements)
+  expect_invariant_under_refinement<SD::Loop_mask>(tetrahedron<Exact_mesh>(), [](Exact_mesh& m) {
+    SD::loop_subdivision(m);
+  });
+  // borders: a quad grid (border vertices with 1 and 2 faces)
+  expect_invariant_under_refinement<SD::Catmull_clark_mask>(grid<Exact_mesh>(2, 1, false), [](Exact_mesh& m) {
+    SD::catmull_clark_subdivision(m);
+  });
+}
+
+// border vertices: the border is the cubic B-spline of the border polygon, so
+// the limit of a border vertex is (p_prev + 4 p + p_next) / 6, exactly
+TEST(ProjectToLimit, border_vertices_are_on_the_cubic_bspline)
+{
+  Exact_mesh mesh = grid<Exact_mesh>(3, 2, true);
+  // lift the points so that nothing is planar
+  for(auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    mesh.point(v) = QK::Point_3(p.x(), p.y(), p.x() * p.y() + Q(v.idx() % 3) / Q(7));
+  }
+  SD::loop_warren_subdivision(mesh);
+  Exact_mesh limit = mesh;
+  SD::project_to_limit<Warren_loop>(limit);
+  int border = 0;
+  for(auto v : mesh.vertices()) {
+    const auto walk = SD::internal::border_halfedges_at(v, mesh);
+    if(walk.first == Exact_mesh::null_halfedge())
+      continue;
+    ++border;
+    const auto& prev = mesh.point(mesh.source(walk.first));
+    const auto& next = mesh.point(mesh.target(walk.second));
+    const auto& p = mesh.point(v);
+    const QK::Point_3 expected(
+      (prev.x() + Q(4) * p.x() + next.x()) / Q(6), (prev.y() + Q(4) * p.y() + next.y()) / Q(6),
+      (prev.z() + Q(4) * p.z() + next.z()) / Q(6));
+    EXPECT_EQ(limit.point(v), expected) << "vertex " << v.idx();
+  }
+  EXPECT_EQ(border, 20);
+}
+
+// interpolating schemes leave every point where it is (limit mask e0)
+TEST(ProjectToLimit, interpolating_schemes_keep_the_points)
+{
+  Mesh open = grid(4, 3, true);
+  for(V v : open.vertices())
+    open.point(v) = K::Point_3(open.point(v).x(), open.point(v).y(), std::sin(double(v.idx())));
+  Mesh closed = icosahedron();
+  SD::loop_subdivision(closed);
+  for(const Mesh* input : {&open, &closed}) {
+    Mesh a = *input, b = *input;
+    SD::butterfly_subdivision(a);
+    SD::modified_butterfly_subdivision(b);
+    Mesh pa = a, pb = b;
+    SD::project_to_limit<SD::Butterfly_mask>(pa);
+    SD::project_to_limit<SD::Modified_butterfly_mask>(pb);
+    EXPECT_EQ(points_of(pa), points_of(a));
+    EXPECT_EQ(points_of(pb), points_of(b));
+  }
+  Mesh c = closed;
+  SD::interpolating_sqrt3_subdivision(c, CGAL::parameters::number_of_iterations(2));
+  Mesh pc = c;
+  SD::project_to_limit<SD::Interpolating_sqrt3_mask>(pc);
+  EXPECT_EQ(points_of(pc), points_of(c));
+}
+
+TEST(ProjectToLimit, sqrt3_agrees_with_deep_refinement)
+{
+  Mesh mesh = icosahedron();
+  SD::sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Sqrt3_mask>(limit);
+  Mesh deep = mesh;
+  SD::sqrt3_subdivision(deep, CGAL::parameters::number_of_iterations(8));
+  double worst = 0;
+  for(V v : mesh.vertices())
+    worst = (std::max)(worst, distance(deep.point(v), limit.point(v)));
+  // two steps contract by (2 + 2 cos(2 pi / n)) / 9 <= 4/9 (n = 5, 6)
+  EXPECT_LE(worst, std::pow(4.0 / 9, 4));
+}
+
+// ------------------------------------------------------------------ normals
+
+// planar meshes: every normal is exactly +z (faces counter-clockwise seen from
+// +z), border vertices included, for every scheme
+TEST(LimitNormals, planar_meshes_have_the_plane_normal)
+{
+  Mesh triangles = grid(5, 4, true);
+  Mesh quads = grid(4, 3, false);
+  SD::loop_subdivision(triangles);
+  SD::catmull_clark_subdivision(quads);
+  const auto expect_plus_z = [](const std::vector<K::Vector_3>& normals, const std::string& scheme) {
+    for(std::size_t i = 0; i < normals.size(); ++i)
+      EXPECT_EQ(normals[i], K::Vector_3(0, 0, 1)) << scheme << " vertex " << i;
+  };
+  expect_plus_z(limit_normals_of<SD::Loop_mask>(triangles), "Loop");
+  expect_plus_z(limit_normals_of<SD::Catmull_clark_mask>(quads), "Catmull-Clark");
+  expect_plus_z(limit_normals_of<SD::Butterfly_mask>(triangles), "butterfly");
+  expect_plus_z(limit_normals_of<SD::Modified_butterfly_mask>(triangles), "modified butterfly");
+  expect_plus_z(limit_normals_of<SD::Linear_triangle_mask>(triangles), "linear");
+}
+
+// a subdivided icosahedron is nearly a sphere: the limit normal is close to
+// the direction of the limit point; and the tangent plane is that of the
+// deeply refined, projected mesh (finite differences)
+TEST(LimitNormals, sphere_like_mesh)
+{
+  Mesh mesh = icosahedron();
+  SD::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Loop_mask>(limit);
+  const std::vector<K::Vector_3> normals = limit_normals_of<SD::Loop_mask>(mesh);
+  for(V v : mesh.vertices()) {
+    const K::Vector_3 radial = limit.point(v) - CGAL::ORIGIN;
+    EXPECT_NEAR(normals[v.idx()].squared_length(), 1.0, 1e-14);
+    EXPECT_GT(normals[v.idx()] * radial / std::sqrt(radial.squared_length()), 0.99) << v.idx();
+  }
+  // refinement does not change the tangent plane
+  Mesh finer = mesh;
+  SD::loop_subdivision(finer);
+  const std::vector<K::Vector_3> finer_normals = limit_normals_of<SD::Loop_mask>(finer);
+  for(V v : mesh.vertices())
+    EXPECT_NEAR(normals[v.idx()] * finer_normals[v.idx()], 1.0, 1e-12) << v.idx();
+  // finite differences: L more levels, projected to the limit; the normal of
+  // the limit points around the old vertex, area-weighted
+  Mesh deep = mesh;
+  SD::loop_subdivision(deep, CGAL::parameters::number_of_iterations(4));
+  SD::project_to_limit<SD::Loop_mask>(deep);
+  double worst = 0;
+  for(V v : mesh.vertices()) {
+    K::Vector_3 sum(0, 0, 0);
+    for(auto f : CGAL::faces_around_target(deep.halfedge(v), deep)) {
+      const auto h = deep.halfedge(f);
+      sum = sum + CGAL::cross_product(deep.point(deep.target(h)) - deep.point(deep.source(h)),
+                                      deep.point(deep.target(deep.next(h))) - deep.point(deep.source(h)));
+    }
+    sum = sum / std::sqrt(sum.squared_length());
+    worst = (std::max)(worst, 1 - sum * normals[v.idx()]);
+  }
+  EXPECT_LT(worst, 1e-3);
+}
+
+TEST(LimitNormals, catmull_clark_cube_normals_point_outward)
+{
+  Mesh mesh = cube();
+  SD::catmull_clark_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  const std::vector<K::Vector_3> normals = limit_normals_of<SD::Catmull_clark_mask>(mesh);
+  const K::Point_3 centre(0.5, 0.5, 0.5);
+  for(V v : mesh.vertices()) {
+    const K::Vector_3 radial = limit.point(v) - centre;
+    EXPECT_GT(normals[v.idx()] * radial / std::sqrt(radial.squared_length()), 0.5) << v.idx();
+  }
+  // by symmetry, the normal at a corner of the cube is along its diagonal
+  for(Mesh::size_type i = 0; i < 8; ++i) {
+    const K::Vector_3 radial = limit.point(V(i)) - centre;
+    EXPECT_NEAR(normals[i] * radial / std::sqrt(radial.squared_length()), 1.0, 1e-12);
+  }
+}
+
+// a flat-folded neighbourhood: every neighbour of v on one line through v, so
+// both tangent vectors are multiples of that line's direction; the normal is
+// the documented fallback (area-weighted normal of the faces at the limit points)
+TEST(LimitNormals, parallel_tangents_fall_back_to_face_normals)
+{
+  Mesh mesh = grid(6, 6, true);
+  SD::loop_subdivision(mesh); // every vertex of the interior regular enough
+  V centre;
+  for(V v : mesh.vertices())
+    if(mesh.point(v) == K::Point_3(3, 3, 0))
+      centre = v;
+  const K::Vector_3 d(1, 2, 3);
+  for(V u : CGAL::vertices_around_target(mesh.halfedge(centre), mesh)) {
+    const K::Vector_3 offset = mesh.point(u) - mesh.point(centre);
+    mesh.point(u) = mesh.point(centre) + d * (offset.x() + 0.3 * offset.y());
+  }
+  const auto evaluator = SD::make_limit_evaluator<SD::Loop_mask>();
+  const auto results = evaluator.evaluate(mesh, mesh.points(), static_cast<const SD::internal::No_heights*>(nullptr), "test");
+  const auto& r = results[centre.idx()];
+  ASSERT_TRUE(r.tangents);
+  const auto n = SD::internal::cross(r.tangent[0], r.tangent[1]);
+  EXPECT_LE(SD::internal::norm(n), 1e-10 * SD::internal::norm(r.tangent[0]) * SD::internal::norm(r.tangent[1]));
+  const std::vector<K::Vector_3> normals = limit_normals_of<SD::Loop_mask>(mesh);
+  const K::Vector_3 normal = normals[centre.idx()];
+  EXPECT_TRUE(std::isfinite(normal.x()) && std::isfinite(normal.y()) && std::isfinite(normal.z()));
+  EXPECT_NEAR(normal.squared_length(), 1.0, 1e-12);
+  // the fallback: faces around the centre with their corners at the limit points
+  K::Vector_3 sum(0, 0, 0);
+  for(auto f : CGAL::faces_around_target(mesh.halfedge(centre), mesh)) {
+    const auto h = mesh.halfedge(f);
+    const auto& a = results[mesh.source(h).idx()].limit;
+    const auto& b = results[mesh.target(h).idx()].limit;
+    const auto& c = results[mesh.target(mesh.next(h)).idx()].limit;
+    sum = sum + CGAL::cross_product(b - a, c - a);
+  }
+  sum = sum / std::sqrt(sum.squared_length());
+  EXPECT_NEAR(normal * sum, 1.0, 1e-12);
+  // all control points on one line: no face has an area, the normal is null, not NaN
+  Mesh line = grid(2, 2, true);
+  for(V v : line.vertices())
+    line.point(v) = K::Point_3(line.point(v).x() + line.point(v).y(), 0, 0);
+  for(const K::Vector_3& m : limit_normals_of<SD::Linear_triangle_mask>(line))
+    EXPECT_EQ(m, K::Vector_3(0, 0, 0));
+}
+
+// ------------------------------------------------------------------ displacement
+
+TEST(Displace, zero_height_is_the_limit_surface)
+{
+  Mesh mesh = icosahedron();
+  Mesh displaced = mesh, limit = mesh;
+  SD::Limit_evaluator<SD::Loop_mask>().displace(displaced, [](const K::Point_3&) { return 0.0; },
+                                                 CGAL::parameters::number_of_iterations(2));
+  SD::loop_subdivision(limit, CGAL::parameters::number_of_iterations(2));
+  SD::project_to_limit<SD::Loop_mask>(limit);
+  EXPECT_EQ(points_of(displaced), points_of(limit));
+}
+
+TEST(Displace, constant_height_moves_along_the_unit_normal)
+{
+  Mesh mesh = icosahedron();
+  SD::loop_subdivision(mesh);
+  Mesh limit = mesh;
+  auto normals = limit.add_property_map<V, K::Vector_3>("v:normal", K::Vector_3(0, 0, 0)).first;
+  SD::project_to_limit<SD::Loop_mask>(limit, CGAL::parameters::vertex_normal_map(normals));
+  Mesh displaced = mesh;
+  auto heights = displaced.add_property_map<V, double>("v:height", 0.25).first;
+  SD::Limit_evaluator<SD::Loop_mask>().displace(displaced, heights);
+  for(V v : mesh.vertices()) {
+    EXPECT_NEAR(distance(displaced.point(v), limit.point(v)), 0.25, 1e-14);
+    const K::Vector_3 move = displaced.point(v) - limit.point(v);
+    EXPECT_NEAR(move * normals[v] / 0.25, 1.0, 1e-12);
+    // outward: the sphere grows
+    EXPECT_GT(std::sqrt((displaced.point(v) - CGAL::ORIGIN).squared_length()),
+              std::sqrt((limit.point(v) - CGAL::ORIGIN).squared_length()) + 0.2);
+  }
+}
+
+// heights carried through the levels with the geometry: a linear function of
+// the coarse control points stays that linear function of the limit points, exactly
+TEST(Displace, carried_heights_reproduce_a_linear_function)
+{
+  Exact_mesh mesh = tetrahedron<Exact_mesh>();
+  const auto linear = [](const QK::Point_3& p) -> Q { return Q(2) * p.x() - Q(3) * p.y() + p.z() / Q(5) + Q(1) / Q(7); };
+  auto heights = mesh.add_property_map<Exact_mesh::Vertex_index, Q>("v:height", Q(0)).first;
+  for(auto v : mesh.vertices())
+    heights[v] = linear(mesh.point(v));
+  const auto evaluator = SD::make_limit_evaluator<Warren_loop>();
+  SD::Carried_data<Exact_mesh> data;
+  data.vertex_map(heights);
+  SD::subdivide(mesh, Warren_loop<Exact_mesh, Q>(), SD::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+  for(auto v : mesh.vertices())
+    EXPECT_EQ(heights[v], linear(mesh.point(v)));
+  const auto results = evaluator.evaluate(mesh, mesh.points(), &heights, "test");
+  for(const auto& r : results)
+    EXPECT_EQ(r.height, linear(r.limit));
+  // displace does the same: the displacement of every vertex is that height along the normal
+  Exact_mesh coarse = tetrahedron<Exact_mesh>();
+  auto coarse_heights = coarse.add_property_map<Exact_mesh::Vertex_index, Q>("v:height", Q(0)).first;
+  for(auto v : coarse.vertices())
+    coarse_heights[v] = linear(coarse.point(v));
+  evaluator.displace(coarse, coarse_heights, CGAL::parameters::number_of_iterations(2));
+  ASSERT_EQ(coarse.number_of_vertices(), results.size());
+  for(auto v : coarse.vertices()) {
+    const double moved = std::sqrt(CGAL::to_double(CGAL::squared_distance(coarse.point(v), results[v.idx()].limit)));
+    EXPECT_NEAR(moved, std::abs(CGAL::to_double(results[v.idx()].height)), 1e-12);
+  }
+}
+
+TEST(Displace, callable_height_is_evaluated_at_the_limit_point)
+{
+  Mesh mesh = cube();
+  Mesh displaced = mesh;
+  auto normals = displaced.add_property_map<V, K::Vector_3>("v:normal", K::Vector_3(0, 0, 0)).first;
+  SD::Limit_evaluator<SD::Catmull_clark_mask>().displace(
+    displaced, [](const K::Point_3& p) { return p.z(); },
+    CGAL::parameters::number_of_iterations(2).vertex_normal_map(normals));
+  Mesh limit = mesh;
+  SD::catmull_clark_subdivision(limit, CGAL::parameters::number_of_iterations(2));
+  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  for(V v : limit.vertices()) {
+    const K::Vector_3 expected = normals[v] * limit.point(v).z();
+    EXPECT_NEAR(std::sqrt((displaced.point(v) - limit.point(v) - expected).squared_length()), 0.0, 1e-14);
+  }
+}
+
+// ------------------------------------------------------------------ refusals
+
+TEST(LimitErrors, refusals_name_the_problem)
+{
+  Mesh quads = cube();
+  EXPECT_NE(testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Doo_sabin_mask>(quads); })
+              .find("Doo-Sabin is a dual scheme"),
+            std::string::npos);
+  EXPECT_NE(testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Loop_mask>(quads); })
+              .find("needs a mesh whose faces all have 3 vertices"),
+            std::string::npos);
+  Mesh open = grid(2, 2, true);
+  const std::string sqrt3 = testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Sqrt3_mask>(open); });
+  EXPECT_NE(sqrt3.find("project_to_limit (sqrt3 (Kobbelt)): vertex 0: border vertices of sqrt3"), std::string::npos)
+    << sqrt3;
+  EXPECT_EQ(points_of(open), points_of(grid(2, 2, true))); // unchanged
+}
+
+} // namespace
