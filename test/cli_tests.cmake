@@ -249,4 +249,42 @@ subdiv_surface_error(surface_unknown_option 2 "unknown option '--closed'"
 subdiv_surface_error(surface_unwritable_output 1 "cannot write '[^']*/no/such/dir/out.off'"
   ARGS surface ${tetra} -o @WORK@/no/such/dir/out.off --scheme loop --levels 1)
 
+# --- surface --limit and --displace (CGAL/Subdiv/analysis/limit.h) ---------------
+# the tetrahedron (valence 3): Loop's limit mask 2/5, 1/5, 1/5, 1/5 puts (1,1,1) at (1/5,1/5,1/5)
+set(near_fifth "0\\.(19999999999999|20000000000000)[0-9]*")
+subdiv_cli_test(surface_limit_levels_zero ARGS surface ${tetra} ${mesh_out} --scheme loop-warren --levels 0 --limit
+  OUTPUT @WORK@/out.off VERTICES 4 FACES 4 STDOUT_REGEX "loop-warren, 0 levels, limit: 4 V, 6 E, 4 F -> 4 V, 6 E, 4 F"
+  FILE @WORK@/out.off FILE_REGEX "\n${near_fifth} ${near_fifth} ${near_fifth}\n${near_fifth} -${near_fifth} -${near_fifth}\n")
+# the limit point does not move under refinement: after 2 levels too
+subdiv_cli_test(surface_limit_loop ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 2 --limit
+  OUTPUT @WORK@/out.off VERTICES 34 FACES 64 FILE @WORK@/out.off FILE_REGEX "\n${near_fifth} ${near_fifth} ${near_fifth}\n")
+# the cube (valence 3): Catmull-Clark's limit mask 9/24, 4/24 per edge neighbour, 1/24 per face neighbour
+subdiv_cli_test(surface_limit_catmull_clark ARGS surface ${cube} ${mesh_out} --scheme catmull-clark --levels 1 --limit
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24)
+# interpolating: the old vertices stay where they are
+subdiv_cli_test(surface_limit_butterfly ARGS surface ${tetra} ${mesh_out} --scheme butterfly --levels 1 --limit
+  OUTPUT @WORK@/out.off VERTICES 10 FACES 16 CONTAINS "1 1 1" "1 -1 -1" "-1 1 -1" "-1 -1 1")
+# a border: the limit of the border is the cubic B-spline of the border polygon; z stays 0
+subdiv_cli_test(surface_limit_border ARGS surface ${SUBDIV_CLI_DIR}/open_square.off ${mesh_out} --scheme loop --levels 1 --limit
+  OUTPUT @WORK@/out.off VERTICES 9 FACES 8 CONTAINS "0.16666666666666666 0.16666666666666666 0")
+# heights 0.5 (decimal, fraction, padded, a comment and a blank line): every
+# vertex goes 0.5 along its normal, (1,1,1) to (1/5 + 1/(2 sqrt 3)) (1,1,1)
+set(displaced "0\\.4886751345948[0-9]*")
+subdiv_cli_test(surface_displace ARGS surface ${tetra} ${mesh_out} --scheme loop-warren --levels 1
+  --displace ${SUBDIV_CLI_DIR}/tetra_heights.txt
+  OUTPUT @WORK@/out.off VERTICES 10 FACES 16 STDOUT_REGEX "loop-warren, 1 level, displaced: 4 V, 6 E, 4 F -> 10 V, 24 E, 16 F"
+  FILE @WORK@/out.off FILE_REGEX "\n${displaced} ${displaced} ${displaced}\n")
+subdiv_surface_error(surface_limit_doo_sabin 1 "doo-sabin is a dual scheme, its vertices are not points of the limit surface"
+  ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 1 --limit)
+subdiv_surface_error(surface_limit_sqrt3_border 1 "vertex 0: border vertices of sqrt3 \\(Kobbelt\\) are not analysed"
+  ARGS surface ${SUBDIV_CLI_DIR}/open_square.off ${mesh_out} --scheme sqrt3 --levels 1 --limit)
+subdiv_surface_error(surface_displace_count 1 "HEIGHTS '[^']*tetra_heights_short.txt' has 3 heights, INPUT has 4 vertices"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace ${SUBDIV_CLI_DIR}/tetra_heights_short.txt)
+subdiv_surface_error(surface_displace_bad_line 1 "HEIGHTS '[^']*tetra_heights_bad.txt' line 3: cannot read 'abc' as a number"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace ${SUBDIV_CLI_DIR}/tetra_heights_bad.txt)
+subdiv_surface_error(surface_displace_missing 1 "cannot read HEIGHTS '[^']*no_heights.txt'"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace ${SUBDIV_CLI_DIR}/no_heights.txt)
+subdiv_surface_error(surface_displace_no_value 2 "option --displace needs a value"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace)
+
 endif()

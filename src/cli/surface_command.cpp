@@ -5,8 +5,10 @@
 #include "args.h"
 #include "commands.h"
 #include "surface.h"
+#include "surface_limit.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -14,7 +16,8 @@
 namespace cgal_subdiv {
 namespace {
 
-const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--repair] [--verbose]
+const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
+                           [--displace HEIGHTS] [--repair] [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -36,6 +39,16 @@ writing not included).
 )";
 
 const char* const surface_help_tail = R"(  --levels N            number of refinement levels (N >= 0)
+  --limit               then move every vertex to its limit position (the
+                        limit masks of the scheme's eigen-analysis; all
+                        schemes but doo-sabin, whose vertices are not on the
+                        limit surface; sqrt3 schemes on closed meshes only)
+  --displace HEIGHTS    displacement: HEIGHTS holds one height per vertex of
+                        INPUT, in INPUT's vertex order, one per line (a decimal
+                        or a fraction; blank lines and # comments skipped).
+                        The heights are refined with the points; every vertex
+                        then goes to its limit position plus its limit height
+                        along its unit limit normal
   --repair              read INPUT as a polygon soup, repair and orient it
                         (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh):
                         for files that are not manifold meshes as they stand
@@ -54,6 +67,7 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 
 const std::vector<Option_spec> surface_options = {{{"-o", "--output"}, true}, {{"--scheme"}, true},
                                                   {{"--levels"}, true},       {{"--repair"}, false},
+                                                  {{"--limit"}, false},       {{"--displace"}, true},
                                                   {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}};
 
 // "  name   description" with the description wrapped at 80 columns
@@ -131,9 +145,14 @@ int surface_command(const std::vector<std::string>& arguments)
     throw Input_error("the number of levels must not be negative, got " + std::to_string(levels));
   const Surface_scheme& scheme = find_surface_scheme(args.value("--scheme"));
   const bool verbose = args.has("-v");
+  const bool displace = args.has("--displace");
+  if(displace || args.has("--limit"))
+    check_limit_scheme(scheme);
 
   std::vector<std::string> notes;
   Surface mesh = read_surface(input, args.has("--repair"), notes);
+  const std::vector<double> heights =
+    displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();
   // progress: every level with --verbose, otherwise once the run is long
   bool talking = verbose;
   const Level_callback progress = [&](int level, const Mesh_counts& c, double seconds) {
@@ -148,14 +167,25 @@ int surface_command(const std::vector<std::string>& arguments)
   for(int level = 0; level < levels; ++level)
     predicted_faces *= scheme.face_growth;
   const bool by_level = verbose || predicted_faces >= 1e6;
-  const Surface_result result = subdivide_surface(mesh, scheme, levels, by_level ? progress : Level_callback());
+  Surface_result result;
+  if(displace) {
+    result = displace_surface(mesh, scheme, levels, heights);
+  } else {
+    result = subdivide_surface(mesh, scheme, levels, by_level ? progress : Level_callback());
+    if(args.has("--limit")) {
+      const auto start = std::chrono::steady_clock::now();
+      project_surface_to_limit(mesh, scheme);
+      result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  }
   if(talking)
     std::cerr << "cgal-subdiv: writing " << output << std::endl;
   write_surface(mesh, output);
 
   for(const std::string& note : notes)
     std::cerr << "cgal-subdiv: note: " << note << '\n';
-  std::cout << scheme.name << ", " << levels << (levels == 1 ? " level: " : " levels: ") << describe(result.in)
+  std::cout << scheme.name << ", " << levels << (levels == 1 ? " level" : " levels")
+            << (displace ? ", displaced: " : args.has("--limit") ? ", limit: " : ": ") << describe(result.in)
             << " -> " << describe(result.out) << " in " << seconds_text(result.seconds) << "; wrote " << output
             << std::endl;
   return 0;

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// cgal-subdiv surface --limit and --displace.
+#include "surface_limit.h"
+
+#include "numbers.h"
+
+#include <CGAL/Subdiv/analysis/limit.h>
+#include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
+#include <CGAL/Subdiv/masks/Linear_quad_mask.h>
+#include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Sqrt3_mask.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <chrono>
+#include <fstream>
+
+namespace cgal_subdiv {
+namespace {
+
+namespace SD = CGAL::Subdiv;
+
+template <class M, class N>
+using Warren_loop = SD::Loop_mask<M, N, SD::Warren_beta>;
+
+using Vertex = Surface::Vertex_index;
+
+// calls `f.template operator()<Mask>()` with the mask template of the scheme
+template <class F>
+void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
+{
+  const std::string& name = scheme.name;
+  if(name == "loop")
+    f.template operator()<SD::Loop_mask>();
+  else if(name == "loop-warren")
+    f.template operator()<Warren_loop>();
+  else if(name == "catmull-clark")
+    f.template operator()<SD::Catmull_clark_mask>();
+  else if(name == "sqrt3")
+    f.template operator()<SD::Sqrt3_mask>();
+  else if(name == "butterfly")
+    f.template operator()<SD::Butterfly_mask>();
+  else if(name == "modified-butterfly")
+    f.template operator()<SD::Modified_butterfly_mask>();
+  else if(name == "interpolating-sqrt3")
+    f.template operator()<SD::Interpolating_sqrt3_mask>();
+  else if(name == "linear" && CGAL::is_triangle_mesh(mesh))
+    f.template operator()<SD::Linear_triangle_mask>();
+  else if(name == "linear")
+    f.template operator()<SD::Linear_quad_mask>();
+  else
+    check_limit_scheme(scheme);
+}
+
+struct Project
+{
+  Surface& mesh;
+  template <template <class, class> class Mask>
+  void operator()() const
+  {
+    SD::project_to_limit<Mask>(mesh);
+  }
+};
+
+struct Displace
+{
+  Surface& mesh;
+  int levels;
+  Surface::Property_map<Vertex, double> heights;
+  template <template <class, class> class Mask>
+  void operator()() const
+  {
+    SD::Limit_evaluator<Mask>().displace(mesh, heights, CGAL::parameters::number_of_iterations(levels));
+  }
+};
+
+} // namespace
+
+std::vector<double> read_heights(const std::string& path, std::size_t vertices)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Input_error("cannot read HEIGHTS '" + path + "'");
+  std::vector<double> heights;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if(first == std::string::npos || line[first] == '#')
+      continue;
+    const std::size_t last = line.find_last_not_of(" \t\r");
+    const std::string text = line.substr(first, last - first + 1);
+    try {
+      heights.push_back(nearest_double(parse_number(text)));
+    } catch(const std::exception&) {
+      throw Input_error("HEIGHTS '" + path + "' line " + std::to_string(number) + ": cannot read '" + text +
+                        "' as a number");
+    }
+  }
+  if(heights.size() != vertices)
+    throw Input_error("HEIGHTS '" + path + "' has " + std::to_string(heights.size()) + " heights, INPUT has " +
+                      std::to_string(vertices) + " vertices (one height per vertex, in INPUT's order)");
+  return heights;
+}
+
+void check_limit_scheme(const Surface_scheme& scheme)
+{
+  if(scheme.name == "doo-sabin")
+    throw Input_error("--limit and --displace need the limit masks of vertices; doo-sabin is a dual scheme, its "
+                      "vertices are not points of the limit surface");
+}
+
+void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme)
+{
+  with_mask(scheme, mesh, Project{mesh});
+}
+
+Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+                                const std::vector<double>& heights)
+{
+  Surface_result result;
+  result.in = counts(mesh);
+  CGAL::Subdiv::internal::check_output_faces(scheme.name, static_cast<double>(result.in.faces), scheme.face_growth,
+                                             levels);
+  const auto start = std::chrono::steady_clock::now();
+  auto map = mesh.add_property_map<Vertex, double>("v:cgal_subdiv_height", 0.0).first;
+  std::size_t k = 0;
+  for(Vertex v : mesh.vertices())
+    map[v] = heights.at(k++);
+  // linear: the mask follows the mesh before refinement, as `linear` does
+  with_mask(scheme, mesh, Displace{mesh, levels, map});
+  mesh.remove_property_map(map);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.out = counts(mesh);
+  return result;
+}
+
+} // namespace cgal_subdiv
