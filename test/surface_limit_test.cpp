@@ -13,6 +13,7 @@
 
 #include "mesh_test_utils.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -534,6 +535,26 @@ TEST(Displace, callable_height_is_evaluated_at_the_limit_point)
   for(V v : limit.vertices()) {
     const K::Vector_3 expected = normals[v] * limit.point(v).z();
     EXPECT_NEAR(std::sqrt((displaced.point(v) - limit.point(v) - expected).squared_length()), 0.0, 1e-14);
+  }
+}
+
+// Epeck: the same exact limit points as Simple_cartesian<Exact_rational>, normals unit up to rounding
+TEST(ProjectToLimit, epeck)
+{
+  using EK = CGAL::Epeck;
+  using Epeck_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  Epeck_mesh mesh = tetrahedron<Epeck_mesh>();
+  Exact_mesh reference = tetrahedron<Exact_mesh>();
+  SD::loop_subdivision(mesh);
+  SD::loop_subdivision(reference);
+  auto normals = mesh.add_property_map<Epeck_mesh::Vertex_index, EK::Vector_3>("v:normal").first;
+  SD::project_to_limit<SD::Loop_mask>(mesh, CGAL::parameters::vertex_normal_map(normals));
+  SD::project_to_limit<SD::Loop_mask>(reference);
+  for(auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    const auto& q = reference.point(Exact_mesh::Vertex_index(v.idx()));
+    EXPECT_TRUE(CGAL::exact(p.x()) == q.x() && CGAL::exact(p.y()) == q.y() && CGAL::exact(p.z()) == q.z());
+    EXPECT_NEAR(CGAL::to_double(normals[v].squared_length()), 1.0, 1e-12);
   }
 }
 
