@@ -426,22 +426,27 @@ inline std::vector<int> rings_of_vertices(const Analysis_mesh& mesh, Analysis_ha
   return result;
 }
 
+// returns false when the refined net's part that the patch border has not
+// reached stays under 6 rings: a larger neighbourhood is needed (schemes with
+// wide stencils, e.g. interpolating sqrt3, lose rings to the patch border
+// faster than the refinement adds them)
 template <class DoubleMask, class Result>
-void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& result,
-                                              const Surface_analysis_options& options)
+bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const Surface_analysis_options& options,
+                                   int big)
 {
   using Traits = Analysis_host_traits<typename DoubleMask::Host>;
   const std::complex<double> lambda = result.subdominant, lambda2 = result.second_subdominant;
   const bool complex_pair = std::abs(lambda.imag()) > 1e-12;
   const std::complex<double> other = complex_pair ? std::conj(lambda) : lambda2;
-  const int big = 2 * result.rings + 2;
   result.extended_rings = big;
+  result.characteristic_map = Characteristic_map_verdict::not_applicable;
+  result.characteristic_map_levels = result.annulus_inner = result.annulus_outer = 0;
   const auto extended = local_matrix_of_rings(mask, result.valence, result.boundary, big);
   require(extended.invariant, "the extended neighbourhood is not invariant");
   const Eigen::MatrixXd S = extended.S;
   Eigen::EigenSolver<Eigen::MatrixXd> solver(S, true);
   if(solver.info() != Eigen::Success)
-    return;
+    return true;
   // the extended spectrum
   const double tol = 1e-9;
   int ones = 0, near_pair = 0;
@@ -461,9 +466,9 @@ void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& re
   result.extended_spectrum_ok =
     ones == 1 && near_pair == 2 && result.extended_largest_other < (std::min)(std::abs(lambda), std::abs(other)) - tol;
   if(!result.c1_necessary && !complex_pair && !(result.subdominant_multiplicity == 2))
-    return; // no pair to build the map from
+    return true; // no pair to build the map from
   if(near_pair != 2 || !options.characteristic_map)
-    return;
+    return true;
   // the two real vectors spanning the subdominant eigenspace: for a real
   // eigenvalue the right singular vectors of the smallest singular values of
   // S - lambda I (two for a double eigenvalue: both ~0 unless it is
@@ -488,15 +493,15 @@ void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& re
     const double value = 0.5 * (solver.eigenvalues()[pair[0]].real() + solver.eigenvalues()[pair[1]].real());
     if(!kernel(value, 2, &x, &y)) {
       result.characteristic_map = Characteristic_map_verdict::not_regular; // a Jordan block: no 2D eigenspace
-      return;
+      return true;
     }
   } else if(!kernel(lambda.real(), 1, &x, nullptr) || !kernel(lambda2.real(), 1, &y, nullptr)) {
-    return;
+    return true;
   }
   const double gram = x.squaredNorm() * y.squaredNorm() - CGAL::square(x.dot(y));
   if(!(gram > 1e-12 * x.squaredNorm() * y.squaredNorm())) {
     result.characteristic_map = Characteristic_map_verdict::not_regular; // a Jordan block: no 2D eigenspace
-    return;
+    return true;
   }
   // the planar control net, then refinement by the real host with the double mask
   Patch patch = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, big);
@@ -538,12 +543,26 @@ void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& re
       break;
   }
   if(outer < 6)
-    return; // too little of the map is known: not applicable
+    return false; // too little of the map is known
   const int inner = (std::max)(1, outer / Traits::ring_growth - 1);
   const Annulus_test test = test_annulus(mesh, rings, inner, outer, result.boundary);
   result.characteristic_map = test.verdict;
   result.annulus_inner = test.inner;
   result.annulus_outer = test.outer;
+  return true;
+}
+
+/*
+ * The extended spectrum and the characteristic map over 2r + 2 rings, or
+ * 2 rings more, up to 2r + 8, while too little of the map is known.
+ */
+template <class DoubleMask, class Result>
+void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& result,
+                                              const Surface_analysis_options& options)
+{
+  for(int big = 2 * result.rings + 2; big <= 2 * result.rings + 8; big += 2)
+    if(characteristic_map_with_rings(mask, result, options, big))
+      return;
 }
 
 // the point the verification tracks: the centre, or the first corner of the central face
@@ -647,7 +666,10 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
  *    neighbourhood, refined by the real host and the mask (in double) until
  *    the part of the net that the patch border has not reached (tracked
  *    through the stencils) covers 24 rings, at most 8 levels and about
- *    `options.max_faces` faces. The net over the annulus of rings
+ *    `options.max_faces` faces. If that part stays under 6 rings (wide
+ *    stencils: interpolating sqrt3 at n != 6, whose invariant neighbourhood
+ *    is the one-ring), steps 4 and 5 are redone with 2 more rings, up to
+ *    2r + 8 (`extended_rings` is the count used). The net over the annulus of rings
  *    [outer / g - 1, outer] (g = 2, or 3 for two sqrt3 steps) is tested:
  *    regular if every corner of every face turns the same way (cross product
  *    beyond 1e-12 times the squared radius of the annulus: the faces are
@@ -672,9 +694,16 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
  *    distance to the point the limit mask predicts, relative to the diameter
  *    of the neighbourhood.
  *
- * Schemes with a mask for border vertices are analysed at border vertices;
- * sqrt3 (whose border rules alternate between steps) and Doo-Sabin (dual,
- * centred at a face) are analysed at interior configurations only.
+ * Schemes with a mask for border vertices are analysed at border vertices,
+ * the sqrt3 schemes too: their border is refined on every second step only,
+ * and the analysed double step at a border vertex is a resting step followed
+ * by a refining step (a freshly built patch rests first, as a mesh read from
+ * a file; the neighbourhood is invariant over the pair, which splits the
+ * border 1-to-3 like the interior). Doo-Sabin (dual, centred at a face) is
+ * analysed at interior faces only: with the border topology of `Dual_split`
+ * a border vertex with k >= 3 faces makes border vertices with 3 faces at
+ * every level, so the neighbourhood of a border face is not one of regular
+ * vertices (see doc/limit.md).
  *
  * \tparam MaskTemplate `MaskTemplate<Mesh, FT>` is a mask (`Loop_mask`,
  *         `Catmull_clark_mask`, `Doo_sabin_mask`, `Butterfly_mask`,
@@ -702,7 +731,6 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
   result.valence = valence;
   result.boundary = boundary;
   result.face_centred = Traits::face_centred;
-  internal::require(!(boundary && Traits::steps != 1), "border vertices of " + mask.name() + " are not analysed");
 
   // 1. the matrix
   Local_subdivision_matrix<FT> local = local_subdivision_matrix<MaskTemplate, FT>(valence, boundary, 0, args...);

@@ -60,7 +60,11 @@ using Analysis_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3
  *   maps every ring onto itself), rings x 3. The matrix, its eigenvalues and
  *   the characteristic map are those of the double step
  *   \f$ S = S_2 S_1 \f$: the eigenvalues are the squares of the moduli of the
- *   single-step ones.
+ *   single-step ones. At a border vertex the border is refined on every
+ *   second step only: the double step is a resting step (the patch, built
+ *   fresh, rests first, as a mesh read from a file) then a refining step;
+ *   over the pair the border is split 1-to-3 and the neighbourhood is
+ *   invariant.
  */
 template <class Host>
 struct Analysis_host_traits;
