@@ -288,3 +288,68 @@ subdiv_surface_error(surface_displace_no_value 2 "option --displace needs a valu
   ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace)
 
 endif()
+
+# === cgal-subdiv analyse =======================================================
+if(TARGET cgal-subdiv)
+find_package(Python3 COMPONENTS Interpreter)
+
+subdiv_cli_test(analyse_help ARGS analyse --help
+  STDOUT_REGEX "--scheme.*loop, loop-warren, catmull-clark, doo-sabin, sqrt3.*--valence N.*3 <= N <= 32.*--boundary.*--json.*Exit status")
+# the readable table
+subdiv_cli_test(analyse_loop_table ARGS analyse --scheme loop --valence 5
+  STDOUT_REGEX "^Loop \\(Loop 1987 beta\\) \\(loop\\) at an interior vertex of valence 5\n.*eigenvalues +1, 0.4522542486 \\(x2\\).*subdominant +0.4522542486, multiplicity 2.*characteristic map +regular_injective.*C1 +yes.*limit mask, centre +0.47142")
+subdiv_cli_test(analyse_bspline_table ARGS analyse --scheme bspline
+  STDOUT_REGEX "eigenvalues +1, 0.5, 0.25\n.*limit mask +1/6, 2/3, 1/6 \\(offsets -1..1\\).*smoothness +C\\^2.*Holder exponent +>= 3")
+
+# --json: one JSON object (python3 -m json.tool), fields and values (test/cli/analyse_checks.py)
+function(subdiv_analyse_json name check)
+  if(NOT Python3_Interpreter_FOUND)
+    return()
+  endif()
+  list(JOIN ARGN "|" args)
+  add_test(NAME cli_analyse_json_${name}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:cgal-subdiv> -DPYTHON=${Python3_EXECUTABLE}
+                   -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/analyse_json_${name} "-DARGS=${args}" -DCASE=${check}
+                   -P ${SUBDIV_CLI_DIR}/run_analyse_json.cmake)
+  set_tests_properties(cli_analyse_json_${name} PROPERTIES TIMEOUT 60 LABELS cli)
+endfunction()
+subdiv_analyse_json(loop_3 loop3 analyse --scheme loop --valence 3 --json)
+subdiv_analyse_json(loop_6 loop6 analyse --scheme loop --valence 6 --json)
+subdiv_analyse_json(catmull_clark_5 catmull_clark5 analyse --scheme catmull-clark --valence 5 --json)
+subdiv_analyse_json(butterfly_3 butterfly3 analyse --scheme butterfly --valence 3 --json)
+subdiv_analyse_json(loop_border_2 loop_border2 analyse --scheme loop --valence 2 --boundary --json)
+subdiv_analyse_json(catmull_clark_border_5 catmull_clark_border5 analyse --scheme catmull-clark --valence 5 --boundary --json)
+subdiv_analyse_json(doo_sabin_5 doo_sabin5 analyse --scheme doo-sabin --valence 5 --json)
+subdiv_analyse_json(bspline_3 bspline3 analyse --scheme bspline --degree 3 --json)
+subdiv_analyse_json(four_point_w_1_5 four_point_tense analyse --scheme four-point --w 1/5 --json)
+subdiv_analyse_json(bezier_3 bezier analyse --scheme bezier --json)
+
+# errors: one line on stderr, exit 1 (cannot be analysed) or 2 (malformed command line)
+subdiv_cli_error(analyse_valence_too_small 1 "the valence of an interior vertex must be between 3 and 32, got 2"
+  ARGS analyse --scheme loop --valence 2)
+subdiv_cli_error(analyse_valence_too_large 1 "must be between 3 and 32, got 33" ARGS analyse --scheme catmull-clark --valence 33)
+subdiv_cli_error(analyse_border_zero 1 "the number of faces at a border vertex must be between 1 and 32, got 0"
+  ARGS analyse --scheme loop --valence 0 --boundary)
+subdiv_cli_error(analyse_sqrt3_border 1 "border vertices of sqrt3 are not analysed"
+  ARGS analyse --scheme sqrt3 --valence 4 --boundary)
+subdiv_cli_error(analyse_doo_sabin_border 1 "border vertices of doo-sabin are not analysed"
+  ARGS analyse --scheme doo-sabin --valence 4 --boundary --json)
+subdiv_cli_error(analyse_linear 1 "linear has no smoothness to analyse" ARGS analyse --scheme linear --valence 6)
+subdiv_cli_error(analyse_bspline_degree 1 "degree must be between 1 and 64, got 0" ARGS analyse --scheme bspline --degree 0)
+subdiv_cli_error(analyse_unknown_scheme 2 "unknown scheme 'loopy' \\(expected loop, " ARGS analyse --scheme loopy --valence 6)
+subdiv_cli_error(analyse_missing_scheme 2 "missing --scheme" ARGS analyse --valence 6)
+subdiv_cli_error(analyse_missing_valence 2 "missing --valence N" ARGS analyse --scheme loop --json)
+subdiv_cli_error(analyse_valence_not_a_number 2 "--valence expects a whole number, got 'six'"
+  ARGS analyse --scheme loop --valence six)
+subdiv_cli_error(analyse_valence_for_curve 2 "--valence applies to surface schemes only" ARGS analyse --scheme chaikin --valence 6)
+subdiv_cli_error(analyse_boundary_for_curve 2 "--boundary applies to surface schemes only" ARGS analyse --scheme chaikin --boundary)
+subdiv_cli_error(analyse_degree_for_surface 2 "--degree applies to bspline and bezier only"
+  ARGS analyse --scheme loop --valence 6 --degree 3)
+subdiv_cli_error(analyse_positional 2 "unexpected argument 'loop'" ARGS analyse loop)
+
+# the demo prints the analysis summary and writes it into index.md
+subdiv_cli_test(demo_analysis_summary ARGS demo --output-dir @WORK@/demo TIMEOUT 60
+  STDOUT_REGEX "analysis +valences +subdominant.*\nloop +3\\.\\.8 +0\\.2500 0\\.3750 0\\.4523 0\\.5000 [^\n]*C1 at 3\\.\\.8\n.*\nbutterfly +3\\.\\.8 +0\\.2500 [^\n]*C1 at 4\\.\\.7; not at 3, 8\n.*/demo\n$"
+  FILE @WORK@/demo/index.md
+  FILE_REGEX "## Analysis.*\\| catmull-clark \\| 3\\.\\.8 \\| 0\\.4101, 0\\.5000, [^\n]* \\| C1 at 3\\.\\.8 \\|")
+endif()

@@ -3,6 +3,7 @@
 //
 // cgal-subdiv demo [--output-dir DIR] [--input FILE]: every curve scheme on
 // the bundled polygon; points, figures, convergence tables and an index.
+#include "analyse_summary.h"
 #include "args.h"
 #include "commands.h"
 #include "curve.h"
@@ -37,8 +38,10 @@ Then runs every surface scheme, 3 levels, on the bundled meshes torus.off (a
 closed triangle torus, 64 faces) and house.off (a closed mesh of 40 quads and 4
 triangles; the polygon schemes only) and writes
   surface-SCHEME-MESH.off   the refined mesh
+Last, the eigen-analysis of every surface scheme (as `cgal-subdiv analyse`)
+at interior valences 3..8: subdominant eigenvalue and C1 verdict.
 DIR/index.md lists everything. Summary tables (for surfaces: vertices and
-faces in and out, time) go to stdout.
+faces in and out, time; the analysis summary) go to stdout.
 
   --output-dir DIR   where to write (default: out), created if missing
   --input FILE       the polygon (default: the bundled doc/data/polygon.txt,
@@ -194,7 +197,7 @@ std::string ratio_text(double x)
 
 void write_index(const std::vector<Demo_row>& rows, const std::string& polygon,
                  const std::vector<Surface_demo_row>& surface_rows, const std::vector<Demo_mesh>& meshes,
-                 const fs::path& dir)
+                 const std::vector<Analysis_summary_row>& analysis_rows, const fs::path& dir)
 {
   Atomic_file index((dir / "index.md").string());
   std::ostream& out = index.stream();
@@ -215,6 +218,7 @@ void write_index(const std::vector<Demo_row>& rows, const std::string& polygon,
   }
   out << "\n";
   write_surface_index(surface_rows, meshes, out);
+  write_analysis_index(analysis_rows, out);
   for(const Demo_row& r : rows)
     if(r.failure.empty())
       out << "## " << r.name << "\n\n![" << r.name << "](" << r.name << ".svg)\n\n";
@@ -268,14 +272,23 @@ int demo_command(const std::vector<std::string>& arguments, const std::string& p
   for(const Surface_demo_row& r : surface_rows)
     surface_failures += r.failure.empty() ? 0 : 1;
 
-  write_index(rows, polygon, surface_rows, meshes, dir);
+  const std::vector<Analysis_summary_row> analysis_rows = analysis_summary();
+  std::size_t analysis_failures = 0;
+  for(const Analysis_summary_row& r : analysis_rows)
+    analysis_failures += r.failure.empty() ? 0 : 1;
+
+  write_index(rows, polygon, surface_rows, meshes, analysis_rows, dir);
   print_summary(rows);
   std::cout << "\n";
   print_surface_summary(surface_rows);
+  std::cout << "\n" << std::flush;
+  print_analysis_summary(analysis_rows);
+  std::fflush(stdout);
   const std::size_t files = 3 * (rows.size() - failures) + (surface_rows.size() - surface_failures) + 1;
   std::cout << "\nwrote " << files << " files; open " << (dir / "index.md").string() << "\n"
             << fs::canonical(dir).string() << std::endl;
-  const std::size_t all_failures = failures + surface_failures, all_runs = rows.size() + surface_rows.size();
+  const std::size_t all_failures = failures + surface_failures + analysis_failures,
+                    all_runs = rows.size() + surface_rows.size() + analysis_rows.size();
   if(all_failures)
     throw Input_error(std::to_string(all_failures) + " of " + std::to_string(all_runs) + " demo runs failed");
   return 0;

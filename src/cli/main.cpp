@@ -26,6 +26,9 @@ Commands:
   surface  refine a polygon mesh (OFF, OBJ, PLY, STL) with a surface scheme
            (loop, loop-warren, catmull-clark, doo-sabin, sqrt3, butterfly,
            modified-butterfly, interpolating-sqrt3, linear)
+  analyse  eigen-analysis of a scheme from its masks: eigenvalues, C1
+           verdict, limit mask (surfaces at a vertex of valence N, interior
+           or border; curves); a table or one JSON object (--json)
   demo     run every curve scheme on the bundled polygon and every surface
            scheme on the bundled meshes; write points, meshes, figures,
            convergence tables and an index to a directory (out/)
@@ -64,7 +67,10 @@ int dispatch(const std::vector<std::string>& args, const std::string& program)
     return cgal_subdiv::surface_command(rest);
   if(command == "demo")
     return cgal_subdiv::demo_command(rest, program);
-  throw cgal_subdiv::Usage_error("unknown command '" + command + "' (expected curve, surface or demo; see 'cgal-subdiv --help')");
+  if(command == "analyse" || command == "analyze")
+    return cgal_subdiv::analyse_command(rest);
+  throw cgal_subdiv::Usage_error("unknown command '" + command +
+                                 "' (expected curve, surface, analyse or demo; see 'cgal-subdiv --help')");
 }
 
 } // namespace

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// The surface schemes' eigen-analysis in Exact_rational, one instantiation
+// of analyse_surface_scheme() per mask (the costly translation unit).
+#include "analyse_schemes.h"
+#include "numbers.h"
+
+#include <CGAL/Subdiv/analysis/surface_analysis.h>
+#include <CGAL/Subdiv/masks/Butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
+#include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
+#include <CGAL/Subdiv/masks/Sqrt3_mask.h>
+
+namespace cgal_subdiv {
+namespace {
+
+namespace S = CGAL::Subdiv;
+
+template <class Mesh, class FT>
+using Warren_loop_mask = S::Loop_mask<Mesh, FT, S::Warren_beta>;
+
+template <template <class, class> class Mask>
+Surface_summary run(const std::string& keyword, int valence, bool boundary, const S::Surface_analysis_options& options)
+{
+  const S::Surface_analysis<Exact> a = S::analyse_surface_scheme<Mask, Exact>(valence, boundary, options);
+  Surface_summary s;
+  s.scheme = keyword;
+  s.name = a.scheme;
+  s.valence = a.valence;
+  s.boundary = a.boundary;
+  s.face_centred = a.face_centred;
+  s.rings = a.rings;
+  s.ring = a.ring;
+  s.exact = a.exact;
+  s.rows_sum_to_one = a.rows_sum_to_one;
+  s.eigenvalues = a.eigenvalues;
+  s.exact_eigenvalues = a.exact_eigenvalues;
+  s.one_is_simple_and_dominant = a.one_is_simple_and_dominant;
+  s.subdominant = a.subdominant;
+  s.second_subdominant = a.second_subdominant;
+  s.subdominant_multiplicity = a.subdominant_multiplicity;
+  s.c1_necessary = a.c1_necessary;
+  s.extended_rings = a.extended_rings;
+  s.extended_largest_other = a.extended_largest_other;
+  s.extended_spectrum_ok = a.extended_spectrum_ok;
+  s.characteristic_map = S::to_string(a.characteristic_map);
+  s.characteristic_map_levels = a.characteristic_map_levels;
+  s.annulus_inner = a.annulus_inner;
+  s.annulus_outer = a.annulus_outer;
+  s.c1 = a.c1;
+  s.limit_mask = a.limit_mask;
+  for(const Exact& w : a.limit_mask)
+    s.limit_mask_double.push_back(nearest_double(w)); // CGAL::to_double truncates
+  s.tangent_mask[0] = a.tangent_mask[0];
+  s.tangent_mask[1] = a.tangent_mask[1];
+  s.host_levels = a.host_levels;
+  s.cropped_levels = a.cropped_levels;
+  s.host_error = a.host_error;
+  s.limit_error = a.limit_error;
+  return s;
+}
+
+} // namespace
+
+const std::vector<Surface_scheme_facts>& analysable_surface_schemes()
+{
+  // keyword, split, dual, interpolating, border analysed
+  static const std::vector<Surface_scheme_facts> schemes = {
+    {"loop", "1-to-4 triangle split", false, false, true},
+    {"loop-warren", "1-to-4 triangle split", false, false, true},
+    {"catmull-clark", "quad split", false, false, true},
+    {"doo-sabin", "dual quad split", true, false, false},
+    {"sqrt3", "sqrt3 split", false, false, false},
+    {"butterfly", "1-to-4 triangle split", false, true, true},
+    {"modified-butterfly", "1-to-4 triangle split", false, true, true},
+    {"interpolating-sqrt3", "sqrt3 split", false, true, false},
+  };
+  return schemes;
+}
+
+const Surface_scheme_facts* find_analysable_surface_scheme(const std::string& keyword)
+{
+  for(const Surface_scheme_facts& facts : analysable_surface_schemes())
+    if(facts.keyword == keyword)
+      return &facts;
+  return nullptr;
+}
+
+Surface_summary analyse_surface(const std::string& keyword, int valence, bool boundary, bool characteristic_map,
+                                bool verify_limit)
+{
+  if(keyword == "linear")
+    throw Input_error("linear has no smoothness to analyse: its limit is the control mesh itself (C0); "
+                      "analyse one of the other surface schemes");
+  const Surface_scheme_facts* facts = find_analysable_surface_scheme(keyword);
+  if(!facts)
+    throw Usage_error("unknown scheme '" + keyword + "'");
+  if(boundary && !facts->border_analysis)
+    throw Input_error("border vertices of " + keyword + " are not analysed" +
+                      (facts->dual ? " (a dual scheme is analysed at interior faces only)"
+                                   : " (its border rules alternate between steps)"));
+  const int low = boundary ? 1 : 3;
+  if(valence < low || valence > max_analysed_valence) {
+    const std::string what = boundary ? "the number of faces at a border vertex"
+                             : facts->dual ? "the number of corners of the central face"
+                                           : "the valence of an interior vertex";
+    throw Input_error(what + " must be between " + std::to_string(low) + " and " +
+                      std::to_string(max_analysed_valence) + ", got " + std::to_string(valence));
+  }
+  S::Surface_analysis_options options;
+  options.characteristic_map = characteristic_map;
+  options.verify_limit = verify_limit;
+  if(keyword == "loop")
+    return run<S::Loop_mask>(keyword, valence, boundary, options);
+  if(keyword == "loop-warren")
+    return run<Warren_loop_mask>(keyword, valence, boundary, options);
+  if(keyword == "catmull-clark")
+    return run<S::Catmull_clark_mask>(keyword, valence, boundary, options);
+  if(keyword == "doo-sabin")
+    return run<S::Doo_sabin_mask>(keyword, valence, boundary, options);
+  if(keyword == "sqrt3")
+    return run<S::Sqrt3_mask>(keyword, valence, boundary, options);
+  if(keyword == "butterfly")
+    return run<S::Butterfly_mask>(keyword, valence, boundary, options);
+  if(keyword == "modified-butterfly")
+    return run<S::Modified_butterfly_mask>(keyword, valence, boundary, options);
+  return run<S::Interpolating_sqrt3_mask>(keyword, valence, boundary, options);
+}
+
+} // namespace cgal_subdiv
