@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// subdiv-bench: the jobs of every library. A function returns nullptr when its
+// library (or the scheme in it) is not there; `*_missing()` says why.
+#ifndef SUBDIV_BENCH_LIBRARIES_H
+#define SUBDIV_BENCH_LIBRARIES_H
+
+#include "bench.h"
+
+#include <string>
+
+namespace subdiv_bench {
+
+struct Input;
+
+// --- CGAL Subdiv (ours) and CGAL's Subdivision_method_3 (ours.cpp) ----------------
+
+/// whether CGAL Subdiv has the named parameter `threads(n)` (multi-threaded
+/// paths), and whether it is compiled with TBB (CGAL_LINKED_WITH_TBB)
+bool ours_has_threads();
+bool ours_with_tbb();
+/// `loop_subdivision`, ... into the input's Surface_mesh (a copy), with
+/// `threads(threads)` when the library has it; nullptr for threads > 1 if not
+Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threads = 1);
+/// `CGAL::Subdivision_method_3::Loop_subdivision`, ... on a copy
+Job_ptr cgal_refinement(const Input& input, Scheme scheme, int levels);
+/// `make_stencil_table(mesh, mask, levels)` (Loop and Catmull-Clark), threads as above
+Job_ptr ours_stencil_build(const Input& input, Scheme scheme, int levels, int threads = 1);
+/// `Stencil_table::apply` on std::vector<Point_3> (one thread) or `apply_range`
+/// on two halves of the stencils (two std::threads); the table is made here
+Apply_ptr ours_apply(const Input& input, Scheme scheme, int levels);
+/// the same refinements with CGAL::Epick or CGAL::Epeck points (exact.cpp)
+Job_ptr ours_refinement_kernel(const Input& input, Scheme scheme, int levels, bool exact);
+Job_ptr cgal_refinement_kernel(const Input& input, Scheme scheme, int levels, bool exact);
+
+// --- OpenMesh (peer_openmesh.cpp) ------------------------------------------------
+
+std::string openmesh_missing(); // empty if OpenMesh is there
+std::string openmesh_version();
+/// Subdivider::Uniform::LoopT on a TriMesh / CatmullClarkT on a PolyMesh (double points)
+Job_ptr openmesh_refinement(const Soup& input, Scheme scheme, int levels);
+
+// --- OpenSubdiv Far (peer_opensubdiv.cpp) -----------------------------------------
+
+std::string osd_missing(); // empty if OpenSubdiv is there
+std::string osd_version();
+/// TopologyRefinerFactory<TopologyDescriptor>::Create + RefineUniform +
+/// PrimvarRefinerReal<double>::Interpolate level by level (no conversion into a
+/// halfedge mesh). Options: VTX_BOUNDARY_EDGE_ONLY, TRI_SUB_CATMARK.
+Job_ptr osd_refinement(const Soup& input, Scheme scheme, int levels);
+/// StencilTableFactoryReal<double>::Create (uniform, finest level only,
+/// factorized): with the refinement of the topology in the timer, or
+/// (`factory_only`) with the refiner made and refined in prepare()
+Job_ptr osd_stencil_build(const Soup& input, Scheme scheme, int levels, bool factory_only);
+/// StencilTableReal<double>::UpdateValues, one thread or two std::threads on
+/// two halves of the stencils (the `start`, `end` arguments)
+Apply_ptr osd_apply(const Soup& input, Scheme scheme, int levels);
+/// Osd::OmpEvaluator::EvalStencils on a float table (what Debian's libosdCPU
+/// offers for several threads; floats, so it moves fewer bytes)
+Apply_ptr osd_apply_omp_float(const Soup& input, Scheme scheme, int levels);
+
+} // namespace subdiv_bench
+
+#endif // SUBDIV_BENCH_LIBRARIES_H

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+//
+// subdiv-bench: the jobs of CGAL Subdiv and of CGAL's Subdivision_method_3.
+#include "inputs.h"
+#include "libraries.h"
+#include "threads_parameter.h"
+
+#include <CGAL/Subdiv/stencils/make_stencil_table.h>
+#include <CGAL/Subdiv/surface_subdivision.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+
+#include <thread>
+#include <type_traits>
+
+namespace subdiv_bench {
+namespace {
+
+std::vector<P3> points_of(const Mesh& mesh)
+{
+  std::vector<P3> points;
+  points.reserve(mesh.number_of_vertices());
+  for(const Mesh::Vertex_index v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    points.push_back({p.x(), p.y(), p.z()});
+  }
+  return points;
+}
+
+// a refinement in place on a copy of the input's Surface_mesh
+template <class Refine>
+class Mesh_job : public Job
+{
+public:
+  Mesh_job(const Mesh& input, Refine refine) : m_input(input), m_refine(refine) {}
+  void prepare() override
+  {
+    m_mesh = Mesh();
+    m_mesh = m_input;
+  }
+  void run() override { m_refine(m_mesh); }
+  std::size_t output_faces() const override { return m_mesh.number_of_faces(); }
+  std::vector<P3> output_points() const override { return points_of(m_mesh); }
+
+private:
+  const Mesh& m_input;
+  Refine m_refine;
+  Mesh m_mesh;
+};
+
+template <class Refine>
+Job_ptr mesh_job(const Mesh& input, Refine refine)
+{
+  return std::make_unique<Mesh_job<Refine>>(input, refine);
+}
+
+class Stencil_build_job : public Job
+{
+public:
+  Stencil_build_job(const Mesh& input, Scheme scheme, int levels, int threads)
+    : m_input(input), m_scheme(scheme), m_levels(levels), m_threads(threads)
+  {
+  }
+  void prepare() override { m_table = Table(); }
+  void run() override
+  {
+    const auto np = with_threads(m_threads, CGAL::parameters::default_values());
+    if(m_scheme == Scheme::loop)
+      m_table =
+        CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Loop_mask<Mesh>(), m_levels, (Mesh*)nullptr, np);
+    else
+      m_table = CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), m_levels,
+                                                 (Mesh*)nullptr, np);
+  }
+
+private:
+  using Table = CGAL::Subdiv::Stencil_table<double>;
+  const Mesh& m_input;
+  Scheme m_scheme;
+  int m_levels;
+  int m_threads;
+  Table m_table;
+};
+
+class Ours_apply_job : public Apply_job
+{
+public:
+  Ours_apply_job(const Mesh& input, Scheme scheme, int levels)
+  {
+    const auto np = with_threads(1, CGAL::parameters::default_values());
+    if(scheme == Scheme::loop)
+      m_table = CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Loop_mask<Mesh>(), levels, (Mesh*)nullptr, np);
+    else
+      m_table =
+        CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), levels, (Mesh*)nullptr, np);
+    for(const Mesh::Vertex_index v : input.vertices())
+      m_in.push_back(input.point(v));
+    m_out.resize(m_table.number_of_stencils());
+  }
+  void run() override
+  {
+    if(m_threads <= 1) {
+      m_table.apply(m_in, m_out);
+      return;
+    }
+    const std::size_t n = m_table.number_of_stencils(), half = n / 2;
+    std::thread other([&] { m_table.apply_range(m_in, m_out, half, n); });
+    m_table.apply_range(m_in, m_out, 0, half);
+    other.join();
+  }
+  std::vector<P3> output_points() const override
+  {
+    std::vector<P3> points;
+    for(const Point& p : m_out)
+      points.push_back({p.x(), p.y(), p.z()});
+    return points;
+  }
+  std::size_t stencils() const override { return m_table.number_of_stencils(); }
+  std::size_t terms() const override { return m_table.number_of_terms(); }
+  std::size_t sources() const override { return m_table.number_of_sources(); }
+  void set_threads(int threads) override { m_threads = threads; }
+
+private:
+  CGAL::Subdiv::Stencil_table<double> m_table;
+  std::vector<Point> m_in, m_out;
+  int m_threads = 1;
+};
+
+} // namespace
+
+bool ours_has_threads() { return has_threads; }
+
+bool ours_with_tbb()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return true;
+#else
+  return false;
+#endif
+}
+
+Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threads)
+{
+  if(threads > 1 && !has_threads)
+    return nullptr;
+  const auto np = with_threads(threads, CGAL::parameters::number_of_iterations(levels));
+  switch(scheme) {
+  case Scheme::loop:
+    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np); });
+  case Scheme::catmull_clark:
+    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::catmull_clark_subdivision(m, np); });
+  case Scheme::doo_sabin:
+    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::doo_sabin_subdivision(m, np); });
+  case Scheme::sqrt3:
+    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::sqrt3_subdivision(m, np); });
+  }
+  return nullptr;
+}
+
+Job_ptr cgal_refinement(const Input& input, Scheme scheme, int levels)
+{
+  namespace SM = CGAL::Subdivision_method_3;
+  const auto np = CGAL::parameters::number_of_iterations(levels);
+  switch(scheme) {
+  case Scheme::loop:
+    return mesh_job(input.mesh, [np](Mesh& m) { SM::Loop_subdivision(m, np); });
+  case Scheme::catmull_clark:
+    return mesh_job(input.mesh, [np](Mesh& m) { SM::CatmullClark_subdivision(m, np); });
+  case Scheme::doo_sabin:
+    return mesh_job(input.mesh, [np](Mesh& m) { SM::DooSabin_subdivision(m, np); });
+  case Scheme::sqrt3:
+    return mesh_job(input.mesh, [np](Mesh& m) { SM::Sqrt3_subdivision(m, np); });
+  }
+  return nullptr;
+}
+
+Job_ptr ours_stencil_build(const Input& input, Scheme scheme, int levels, int threads)
+{
+  if(scheme != Scheme::loop && scheme != Scheme::catmull_clark)
+    return nullptr;
+  if(threads > 1 && !has_threads)
+    return nullptr;
+  return std::make_unique<Stencil_build_job>(input.mesh, scheme, levels, threads);
+}
+
+Apply_ptr ours_apply(const Input& input, Scheme scheme, int levels)
+{
+  if(scheme != Scheme::loop && scheme != Scheme::catmull_clark)
+    return nullptr;
+  return std::make_unique<Ours_apply_job>(input.mesh, scheme, levels);
+}
+
+} // namespace subdiv_bench
