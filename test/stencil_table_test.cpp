@@ -100,3 +100,42 @@ TEST(Stencil_table, refuses_what_subdivide_refuses_and_mismatched_inputs)
   EXPECT_NE(testing_utils::bad_input_message([&] { table.apply(too_few, out); }).find("needs 6 source values"),
             std::string::npos);
 }
+
+TEST(Stencil_table, every_host_composes_exactly_what_subdivide_makes)
+{
+  // sqrt3 on a mesh with a border visits its new vertices out of order on
+  // refining steps (the table is then written in two passes); Catmull-Clark
+  // and Doo-Sabin on the triangles of the piece: faces of several sizes
+  const Mesh coarse = open_bipyramid_piece();
+  const auto check = [&](const auto& mask, const auto& refine, int levels) {
+    Mesh refined;
+    const auto table = S::make_stencil_table(coarse, mask, levels, &refined);
+    Mesh reference = coarse;
+    refine(reference, CGAL::parameters::number_of_iterations(levels));
+    EXPECT_EQ(points_of(refined), points_of(reference)) << mask.name() << ", " << levels << " levels";
+    std::vector<KE::Point_3> fine;
+    table.apply(points_of(coarse), fine);
+    EXPECT_EQ(fine, points_of(reference)) << mask.name() << ", " << levels << " levels";
+  };
+  for(int levels = 0; levels <= 3; ++levels) {
+    check(S::Sqrt3_mask<Mesh>(), [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, levels);
+    check(S::Catmull_clark_mask<Mesh>(), [](Mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); }, levels);
+    check(S::Doo_sabin_mask<Mesh>(), [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, levels);
+    check(S::Butterfly_mask<Mesh>(), [](Mesh& m, const auto& np) { S::butterfly_subdivision(m, np); }, levels);
+  }
+}
+
+TEST(Stencil_table, named_parameters_without_a_refined_mesh)
+{
+  const Mesh coarse = open_bipyramid_piece();
+  const auto a = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2, S::threads(2));
+  const auto b = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2, nullptr, S::threads(1));
+  const auto c = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2);
+  ASSERT_EQ(a.number_of_terms(), c.number_of_terms());
+  ASSERT_EQ(b.number_of_terms(), c.number_of_terms());
+  for(std::size_t t = 0; t < c.number_of_terms(); ++t) {
+    EXPECT_EQ(a.weight(t), c.weight(t));
+    EXPECT_EQ(b.source(t), c.source(t));
+  }
+  EXPECT_EQ(S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 0).number_of_terms(), num_vertices(coarse));
+}

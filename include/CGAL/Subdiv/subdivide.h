@@ -7,11 +7,14 @@
 #include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -59,6 +62,35 @@ void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
     mesh.collect_garbage();
 }
 
+// Surface_mesh, several levels of a host that knows its counts: room for the
+// last level is made at once, so the arrays are not moved at every level
+// (an estimate above the truth costs address space only: untouched pages
+// are never mapped)
+template <class Host, class Mesh>
+void reserve_levels(Mesh&, int)
+{
+}
+
+template <class Host, class Point>
+void reserve_levels(CGAL::Surface_mesh<Point>& mesh, int levels)
+{
+  if(levels < 2)
+    return;
+  Mesh_counts counts{mesh.number_of_vertices(), mesh.number_of_edges(), mesh.number_of_faces(),
+                     mesh.number_of_halfedges()};
+  std::size_t border = 0;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h))
+      ++border;
+  counts.corners -= border;
+  for(int level = 0; level < levels; ++level)
+    if(!Host::next_counts(counts))
+      return;
+  mesh.reserve(static_cast<typename CGAL::Surface_mesh<Point>::size_type>(counts.vertices),
+               static_cast<typename CGAL::Surface_mesh<Point>::size_type>(counts.edges),
+               static_cast<typename CGAL::Surface_mesh<Point>::size_type>(counts.faces));
+}
+
 template <class Mesh>
 bool has_garbage(const Mesh&)
 {
@@ -71,10 +103,46 @@ bool has_garbage(const CGAL::Surface_mesh<Point>& mesh)
   return mesh.has_garbage();
 }
 
+/*
+ * The point accumulator of the fast path, for 3D points with double
+ * coordinates (Simple_cartesian<double>, Epick) stored in one array (a
+ * Surface_mesh point map): sums weight * coordinate in three doubles, in the
+ * order and with the operations of `Mesh_point_sum`, so the points are the
+ * same bit for bit.
+ */
+template <class Point>
+class Flat_point_sum
+{
+public:
+  explicit Flat_point_sum(const Point* points) : m_points(points) {}
+
+  template <class VertexIndex>
+  void add(VertexIndex v, double weight)
+  {
+    const Point& p = m_points[v.idx()];
+    m_x = m_x + p.x() * weight;
+    m_y = m_y + p.y() * weight;
+    m_z = m_z + p.z() * weight;
+  }
+
+  Point point() const { return Point(m_x, m_y, m_z); }
+
+private:
+  const Point* m_points;
+  double m_x = 0, m_y = 0, m_z = 0;
+};
+
+template <class Point>
+constexpr bool is_double_point_3()
+{
+  using K = typename CGAL::Kernel_traits<Point>::Kernel;
+  return std::is_same<typename K::FT, double>::value && std::is_same<typename K::Point_3, Point>::value;
+}
+
 /// one level: the host numbers the new vertices and makes the new faces, the
 /// mask gives every new vertex its weights
 template <class Mask, class Mesh, class VertexPointMap>
-void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
+void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& = Parallel_loop())
 {
   using Host = typename Mask::Host;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
@@ -87,6 +155,66 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
   });
   const Face_soup soup = host.faces();
   rebuild_mesh(mesh, vpm, points, soup);
+}
+
+/*
+ * One level of a Surface_mesh, in place: the host makes the new faces from
+ * the old mesh, the mesh is resized (old elements keep their index, so the old
+ * mesh is still there, below the new elements), the new points are computed
+ * from it, points of new vertices straight into the point map, then the
+ * connectivity is wired over the old one. With a parallel `loop`, the faces,
+ * the points (double coordinates and a point map of the mesh) and the wiring
+ * run in parallel chunks; the result is the same.
+ */
+template <class Mask, class P, class VertexPointMap>
+void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& loop = Parallel_loop())
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using V = typename SM::Vertex_index;
+  using Host = typename Mask::Host;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  const Host host(mesh);
+  const std::size_t old_vertices = num_vertices(mesh);
+  const Face_soup soup = host.faces(loop, false);
+  mesh.resize(static_cast<typename SM::size_type>(soup.number_of_vertices()),
+              static_cast<typename SM::size_type>(soup.number_of_edges()),
+              static_cast<typename SM::size_type>(soup.number_of_faces()));
+  constexpr bool own_map = std::is_same<VertexPointMap, typename SM::template Property_map<V, Point>>::value;
+  if constexpr(own_map) {
+    // new vertices' points go to their place at once; old vertices' points
+    // are read until the end, so theirs wait in `kept`
+    Point* out = &vpm[V(0)];
+    std::vector<Point> kept(old_vertices);
+    const auto store = [&](std::size_t j, const Point& p) { (j < old_vertices ? kept[j] : out[j]) = p; };
+    if constexpr(is_double_point_3<Point>()) {
+      host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+        Flat_point_sum<Point> sum(out);
+        report(sum);
+        store(j, sum.point());
+      }, loop);
+      loop.for_range(old_vertices, 16384, [&](std::size_t begin, std::size_t end) {
+        std::copy(kept.begin() + static_cast<std::ptrdiff_t>(begin), kept.begin() + static_cast<std::ptrdiff_t>(end),
+                  out + begin);
+      });
+    } else {
+      host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+        Mesh_point_sum<VertexPointMap> sum(vpm);
+        report(sum);
+        store(j, sum.point());
+      });
+      std::copy(kept.begin(), kept.end(), out);
+    }
+  } else {
+    std::vector<Point> points(soup.number_of_vertices());
+    host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+      Mesh_point_sum<VertexPointMap> sum(vpm);
+      report(sum);
+      points[j] = sum.point();
+    });
+    for(std::size_t i = 0; i < points.size(); ++i)
+      put(vpm, V(static_cast<typename SM::size_type>(i)), points[i]);
+  }
+  wire_surface_mesh(mesh, soup, loop);
 }
 
 /// one level that also carries other vertex and face data: the stencils are
@@ -136,7 +264,11 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const 
  *     mask's `Number_type`;
  *   - `carried_data` (`CGAL::Subdiv::carried_data(data, np)`):
  *     other vertex data interpolated with the same stencils, face data
- *     inherited by child faces (see `Carried_data`).
+ *     inherited by child faces (see `Carried_data`);
+ *   - `threads` (`CGAL::Subdiv::threads(n, np)`, default 1; 0: TBB's choice):
+ *     how many threads refine a `Surface_mesh` (points with double
+ *     coordinates; with TBB only); the result is the same bit for bit with
+ *     any number.
  *
  * \throws Bad_input when the mesh does not suit the scheme (empty, isolated or
  * non-manifold vertices, non-finite coordinates, a face of the wrong size) or
@@ -158,12 +290,15 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
   const Data* data = choose_parameter<const Data*>(get_parameter(np, internal::carried_data_t()), nullptr);
 
+  const internal::Parallel_loop loop = internal::parallel_loop(np);
+
   internal::make_indices_dense(mesh);
+  internal::reserve_levels<Host>(mesh, levels);
   for(int level = 0; level < levels; ++level) {
     if(data != nullptr && !data->empty())
       internal::refine_once(mesh, mask, vpm, *data);
     else
-      internal::refine_once(mesh, mask, vpm);
+      internal::refine_once(mesh, mask, vpm, loop);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -64,6 +65,8 @@ public:
   /// F' = F + E + V: four times F on a quad mesh, which every mesh becomes
   /// after one level, up to its extraordinary faces
   static double face_growth() { return 4; }
+  /// the counts after one level: not known in advance (false)
+  static bool next_counts(internal::Mesh_counts&) { return false; }
 
   explicit Dual_split(const Mesh& mesh)
     : m_mesh(mesh),
@@ -113,14 +116,22 @@ public:
   Vertex_origin origin(std::size_t j) const { return {Origin_kind::corner, j}; }
 
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`
-  template <class Mask, class Visitor>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
+  /// Surface_mesh), visit is called from several threads, once per vertex.
+  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    std::size_t c = 0;
-    for(face_descriptor f : CGAL::faces(m_mesh))
+    internal::for_each_element(m_number, CGAL::faces(m_mesh), num_faces(m_mesh), loop, [&](face_descriptor f) {
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        visit(c++, [&](auto& acc) { mask.corner_node(m_mesh, h, acc); });
+        visit(corner(h), [&](auto& acc) { mask.corner_node(m_mesh, h, acc); });
+    });
+  }
+
+  /// the new faces (written in this thread, with their parents, whatever the arguments)
+  template <class Loop>
+  internal::Face_soup faces(const Loop&, bool) const
+  {
+    return faces();
   }
 
   /*

@@ -5,11 +5,13 @@
 
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Subdiv {
@@ -45,6 +47,12 @@ public:
   static constexpr int required_face_size = 0;
   /// every face becomes as many quads as it has corners: 4 once all faces are quads
   static double face_growth() { return 4; }
+  /// the counts after one level
+  static bool next_counts(internal::Mesh_counts& c)
+  {
+    c = internal::Mesh_counts{c.vertices + c.edges + c.faces, 2 * c.edges + c.corners, c.corners, 4 * c.corners};
+    return true;
+  }
 
   explicit Quad_split(const Mesh& mesh)
     : m_mesh(mesh),
@@ -72,16 +80,20 @@ public:
   }
 
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`
-  template <class Mask, class Visitor>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
+  /// Surface_mesh), visit is called from several threads, once per vertex.
+  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    for(vertex_descriptor v : vertices(m_mesh))
+    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
       visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-    for(auto e : edges(m_mesh))
+    });
+    internal::for_each_element(m_number, edges(m_mesh), m_edge_count, loop, [&](auto e) {
       visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
-    for(face_descriptor f : CGAL::faces(m_mesh))
+    });
+    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
       visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+    });
   }
 
   /*
@@ -90,31 +102,53 @@ public:
    * edge point of the corner's incoming halfedge to the face point; corners
    * are counted in face order, around each face from `halfedge(f)`.
    */
-  internal::Face_soup faces() const
+  internal::Face_soup faces() const { return faces(internal::Parallel_loop(1), true); }
+
+  /// the new faces, written in parallel chunks by `loop` (Surface_mesh), with
+  /// their parents or not
+  template <class Loop>
+  internal::Face_soup faces(const Loop& loop, bool parents) const
   {
     internal::Face_soup soup(number_of_new_vertices(), 2 * m_edge_count + m_corner_count);
-    soup.reserve(m_corner_count, 4 * m_corner_count);
+    soup.resize_uniform(m_corner_count, 4, parents);
+    // corner ordinal of halfedge(f) for every face: a running sum of face sizes
+    std::vector<internal::Face_soup::Index> first_corner;
+    if(loop.is_parallel() && internal::Mesh_numbering<Mesh>::dense) {
+      first_corner.resize(m_face_count);
+      internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
+        first_corner[m_number(f)] =
+          static_cast<internal::Face_soup::Index>(CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh).size());
+      });
+      std::size_t sum = 0;
+      for(auto& c : first_corner) {
+        const std::size_t size = c;
+        c = static_cast<internal::Face_soup::Index>(sum);
+        sum += size;
+      }
+    }
     const std::size_t first_inner = 2 * m_edge_count;
-    std::size_t corner = 0; // corner ordinal of halfedge(f)
-    for(face_descriptor f : CGAL::faces(m_mesh)) {
+    std::size_t running = 0; // corner ordinal of halfedge(f), sequentially
+    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
       const std::size_t parent = m_number(f);
       const std::size_t face_point = m_vertex_count + m_edge_count + parent;
+      const std::size_t corner = first_corner.empty() ? running : first_corner[parent];
       const halfedge_descriptor first = halfedge(f, m_mesh);
       halfedge_descriptor h = first; // h = h_i, running from v_{i-1} to v_i
       std::size_t c = corner;
       do {
         const halfedge_descriptor n = next(h, m_mesh);
         const std::size_t c_next = (n == first) ? corner : c + 1;
-        soup.corner(edge_point(h), second_half(h));
-        soup.corner(m_number(target(h, m_mesh)), first_half(n));
-        soup.corner(edge_point(n), 2 * (first_inner + c_next));
-        soup.corner(face_point, 2 * (first_inner + c) + 1);
-        soup.close_face(parent);
+        soup.set_corner(4 * c, edge_point(h), second_half(h));
+        soup.set_corner(4 * c + 1, m_number(target(h, m_mesh)), first_half(n));
+        soup.set_corner(4 * c + 2, edge_point(n), 2 * (first_inner + c_next));
+        soup.set_corner(4 * c + 3, face_point, 2 * (first_inner + c) + 1);
+        soup.set_parent(c, parent);
         h = n;
         ++c;
       } while(h != first);
-      corner = c;
-    }
+      if(first_corner.empty())
+        running = c;
+    });
     return soup;
   }
 

@@ -5,6 +5,7 @@
 
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -144,6 +145,8 @@ public:
 
   static constexpr int required_face_size = 3;
   static double face_growth() { return 3; }
+  /// the counts after one level: not known in advance (false)
+  static bool next_counts(internal::Mesh_counts&) { return false; }
 
   explicit Sqrt3_split(const Mesh& mesh)
     : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh)),
@@ -217,15 +220,16 @@ public:
   }
 
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`
-  template <class Mask, class Visitor>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
+  /// Surface_mesh), visit is called from several threads, once per vertex.
+  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    for(vertex_descriptor v : vertices(m_mesh)) {
+    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
       const std::size_t j = m_number(v);
       if(m_border_edges == 0) {
         visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-        continue;
+        return;
       }
       const halfedge_descriptor border_in = m_border_in[j];
       if(border_in == boost::graph_traits<Mesh>::null_halfedge())
@@ -234,11 +238,11 @@ public:
         visit(j, [&](auto& acc) { mask.border_vertex_node(m_mesh, border_in, acc); });
       else
         visit(j, [&](auto& acc) { mask.resting_border_vertex_node(m_mesh, v, acc); });
-    }
-    for(face_descriptor f : CGAL::faces(m_mesh)) {
+    });
+    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
       if(!m_refine_border) {
         visit(m_vertex_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
-        continue;
+        return;
       }
       const std::size_t j = m_face_vertex[m_number(f)];
       halfedge_descriptor border_edge = boost::graph_traits<Mesh>::null_halfedge();
@@ -251,7 +255,14 @@ public:
         visit(j, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 1, acc); });
         visit(j + 1, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 2, acc); });
       }
-    }
+    });
+  }
+
+  /// the new faces (written in this thread, with their parents, whatever the arguments)
+  template <class Loop>
+  internal::Face_soup faces(const Loop&, bool) const
+  {
+    return faces();
   }
 
   internal::Face_soup faces() const

@@ -5,6 +5,7 @@
 
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -35,6 +36,12 @@ public:
 
   static constexpr int required_face_size = 3;
   static double face_growth() { return 4; }
+  /// the counts after one level
+  static bool next_counts(internal::Mesh_counts& c)
+  {
+    c = internal::Mesh_counts{c.vertices + c.edges, 2 * c.edges + 3 * c.faces, 4 * c.faces, 12 * c.faces};
+    return true;
+  }
 
   explicit Triangle_quadrisection(const Mesh& mesh)
     : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh))
@@ -51,24 +58,31 @@ public:
   }
 
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`
-  template <class Mask, class Visitor>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit) const
+  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
+  /// Surface_mesh), visit is called from several threads, once per vertex.
+  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
+  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    for(vertex_descriptor v : vertices(m_mesh))
-      visit(m_number(v),
-            [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-    for(auto e : edges(m_mesh))
-      visit(m_vertex_count + m_number(e),
-            [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
+      visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+    });
+    internal::for_each_element(m_number, edges(m_mesh), m_edge_count, loop, [&](auto e) {
+      visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+    });
   }
 
-  internal::Face_soup faces() const
+  /// the new faces, with their parents
+  internal::Face_soup faces() const { return faces(internal::Parallel_loop(1), true); }
+
+  /// the new faces, written in parallel chunks by `loop` (Surface_mesh), with
+  /// their parents or not
+  template <class Loop>
+  internal::Face_soup faces(const Loop& loop, bool parents) const
   {
     const std::size_t face_count = num_faces(m_mesh);
     internal::Face_soup soup(number_of_new_vertices(), 2 * m_edge_count + 3 * face_count);
-    soup.reserve(4 * face_count, 12 * face_count);
-    for(auto f : CGAL::faces(m_mesh)) {
+    soup.resize_uniform(4 * face_count, 3, parents);
+    internal::for_each_element(m_number, CGAL::faces(m_mesh), face_count, loop, [&](auto f) {
       const std::size_t parent = m_number(f);
       const halfedge_descriptor h[3] = {halfedge(f, m_mesh), next(halfedge(f, m_mesh), m_mesh),
                                         prev(halfedge(f, m_mesh), m_mesh)};
@@ -79,17 +93,18 @@ public:
         // new edge from middle[k] to middle[k+1], inside the face
         inner[k] = 2 * (2 * m_edge_count + 3 * parent + static_cast<std::size_t>(k));
       }
+      std::size_t c = 12 * parent;
       for(int k = 0; k < 3; ++k) { // corner triangle at corner[k]
         const int j = (k + 1) % 3;
-        soup.corner(middle[k], second_half(h[k]));
-        soup.corner(corner[k], first_half(h[j]));
-        soup.corner(middle[j], inner[k] ^ 1);
-        soup.close_face(parent);
+        soup.set_corner(c++, middle[k], second_half(h[k]));
+        soup.set_corner(c++, corner[k], first_half(h[j]));
+        soup.set_corner(c++, middle[j], inner[k] ^ 1);
+        soup.set_parent(4 * parent + static_cast<std::size_t>(k), parent);
       }
       for(int k = 0; k < 3; ++k) // middle triangle
-        soup.corner(middle[k], inner[k]);
-      soup.close_face(parent);
-    }
+        soup.set_corner(c++, middle[k], inner[k]);
+      soup.set_parent(4 * parent + 3, parent);
+    });
     return soup;
   }
 

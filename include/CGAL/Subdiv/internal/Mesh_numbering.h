@@ -9,6 +9,8 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
+#include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Subdiv {
@@ -28,6 +30,10 @@ class Mesh_numbering
   using GT = boost::graph_traits<Mesh>;
 
 public:
+  /// whether ordinal i is the mesh's own index i (Surface_mesh): loops can
+  /// then run on index ranges, in parallel chunks
+  static constexpr bool dense = false;
+
   explicit Mesh_numbering(const Mesh& mesh)
     : m_vertex(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh)),
       m_edge(get(CGAL::dynamic_edge_property_t<std::size_t>(), mesh)),
@@ -69,12 +75,38 @@ class Mesh_numbering<CGAL::Surface_mesh<Point>>
   using SM = CGAL::Surface_mesh<Point>;
 
 public:
+  static constexpr bool dense = true;
+
   explicit Mesh_numbering(const SM&) {}
   std::size_t operator()(typename SM::Vertex_index v) const { return v.idx(); }
   std::size_t operator()(typename SM::Edge_index e) const { return e.idx(); }
   std::size_t operator()(typename SM::Halfedge_index h) const { return h.idx(); }
   std::size_t operator()(typename SM::Face_index f) const { return f.idx(); }
 };
+
+/*
+ * Calls f(d) for every element d of `range` (the vertices, edges or faces of
+ * a mesh, `count` of them): with a dense numbering on index ranges, split into
+ * chunks by `loop` (so f must only write what belongs to d), otherwise in
+ * iteration order in this thread.
+ */
+template <class Numbering, class Range, class Loop, class F>
+void for_each_element(const Numbering&, const Range& range, std::size_t count, const Loop& loop, const F& f)
+{
+  if constexpr(Numbering::dense) {
+    using Descriptor = std::decay_t<decltype(*range.begin())>;
+    using Size = decltype(std::declval<Descriptor>().idx());
+    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        f(Descriptor(static_cast<Size>(i)));
+    });
+  } else {
+    (void)count;
+    (void)loop;
+    for(const auto& d : range)
+      f(d);
+  }
+}
 
 } // namespace internal
 } // namespace Subdiv

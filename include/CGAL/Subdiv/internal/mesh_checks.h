@@ -8,6 +8,7 @@
 #include <CGAL/Subdiv/internal/points.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
 
 #include <cstddef>
 #include <string>
@@ -24,8 +25,101 @@ namespace internal {
  * Surface_mesh without garbage, that is their index).
  */
 template <class Mesh, class VertexPointMap>
+bool passes_mesh_checks(const Mesh&, const VertexPointMap&, int)
+{
+  return false;
+}
+
+/*
+ * Surface_mesh without garbage: one pass over the halfedge, vertex and face
+ * arrays that is enough for everything `check_mesh` checks below (including
+ * CGAL::is_valid_polygon_mesh). Returns false if anything may be wrong; the
+ * full check then runs and names the problem, so the errors are the same.
+ * - next is a bijection (prev(next(h)) = h = next(prev(h))), so
+ *   h -> opposite(next(h)) is one too, and its cycles, along which the target
+ *   stays the same (target(opposite(next(h))) = target(h)), split the
+ *   halfedges; the cycles of the vertices' halfedges add up to all halfedges
+ *   exactly when each vertex's cycle holds all its incoming halfedges (its
+ *   faces form one fan);
+ * - the face cycles along next, plus the border halfedges, add up to all
+ *   halfedges; face(next(h)) = face(h) != face(opposite(h)); and the rest of
+ *   is_valid_polygon_mesh's local conditions, halfedge by halfedge.
+ */
+template <class P, class VertexPointMap>
+bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, int required_face_size)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using size_type = typename SM::size_type;
+  using V = typename SM::Vertex_index;
+  using H = typename SM::Halfedge_index;
+  using F = typename SM::Face_index;
+  if(mesh.has_garbage() || mesh.number_of_faces() == 0)
+    return false;
+  const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
+  std::size_t border_halfedges = 0;
+  for(std::size_t i = 0; i < nh; ++i) {
+    const H h(static_cast<size_type>(i));
+    const H n = mesh.next(h), p = mesh.prev(h);
+    if(std::size_t(n) >= nh || std::size_t(p) >= nh || n == h || mesh.prev(n) != h || mesh.next(p) != h)
+      return false;
+    const V t = mesh.target(h);
+    if(std::size_t(t) >= nv || mesh.target(mesh.opposite(n)) != t || mesh.target(mesh.opposite(h)) == t)
+      return false;
+    const F f = mesh.face(h);
+    if(f != SM::null_face() && std::size_t(f) >= nf)
+      return false;
+    if(mesh.face(n) != f || mesh.face(mesh.opposite(h)) == f)
+      return false;
+    const H nn = mesh.next(n);
+    if(nn == h || mesh.target(n) == t || mesh.target(nn) == t)
+      return false;
+    if(f == SM::null_face())
+      ++border_halfedges;
+  }
+  std::size_t around_vertices = 0;
+  for(std::size_t i = 0; i < nv; ++i) {
+    const V v(static_cast<size_type>(i));
+    const H h = mesh.halfedge(v);
+    if(std::size_t(h) >= nh || mesh.target(h) != v || !is_finite_point(get(vpm, v)))
+      return false;
+    std::size_t count = 0, border = 0;
+    H g = h;
+    do {
+      ++count;
+      if(mesh.face(g) == SM::null_face())
+        ++border;
+      g = mesh.opposite(mesh.next(g));
+    } while(g != h && count <= nh);
+    if(g != h || border > 1)
+      return false;
+    around_vertices += count;
+  }
+  if(around_vertices != nh)
+    return false;
+  std::size_t around_faces = 0;
+  for(std::size_t i = 0; i < nf; ++i) {
+    const F f(static_cast<size_type>(i));
+    const H h = mesh.halfedge(f);
+    if(std::size_t(h) >= nh || mesh.face(h) != f)
+      return false;
+    std::size_t size = 0;
+    H g = h;
+    do {
+      ++size;
+      g = mesh.next(g);
+    } while(g != h && size <= nh);
+    if(g != h || size < 3 || (required_face_size != 0 && size != static_cast<std::size_t>(required_face_size)))
+      return false;
+    around_faces += size;
+  }
+  return around_faces + border_halfedges == nh;
+}
+
+template <class Mesh, class VertexPointMap>
 void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size)
 {
+  if(passes_mesh_checks(mesh, vpm, required_face_size))
+    return;
   require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
   // A vertex is manifold when the halfedges around it (one fan) are all of its
   // incoming halfedges and at most one of them is a border halfedge (a

@@ -8,14 +8,30 @@
 
 #include <CGAL/Subdiv/errors.h>
 
+#include <CGAL/Subdiv/internal/Raw_array.h>
+#include <CGAL/Subdiv/internal/parallel.h>
+
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Subdiv {
 namespace internal {
+
+/// element counts of a mesh; `corners` is the number of face corners, i.e.
+/// of halfedges with a face
+struct Mesh_counts
+{
+  std::size_t vertices;
+  std::size_t edges;
+  std::size_t faces;
+  std::size_t corners;
+};
 
 /*
  * The new connectivity of one level, as the host knows it: every face is a
@@ -24,7 +40,12 @@ namespace internal {
  * come in pairs: id 2e and 2e+1 are the two halves of new edge e, so id ^ 1
  * is the opposite. Knowing the edges lets `rebuild_mesh` wire the halfedge
  * structure directly, with no search for opposite halfedges.
- * Each new face also records the ordinal of the old face it lies in.
+ * Each new face also records the ordinal of the old face it lies in (unless
+ * the host was asked not to: the fast path without carried data).
+ *
+ * A host fills it either face by face (`corner`, `close_face`), or, when all
+ * new faces have the same size, by position (`resize_uniform`, then
+ * `set_corner` and `set_parent`, from any thread, each position once).
  */
 class Face_soup
 {
@@ -32,6 +53,11 @@ public:
   // Indices are stored in 32 bits, like Surface_mesh's own: half the memory
   // traffic of size_t on the hot path.
   using Index = std::uint32_t;
+  struct Corner
+  {
+    Index vertex;
+    Index halfedge;
+  };
 
   Face_soup(std::size_t vertices, std::size_t edges) : m_vertex_count(vertices), m_edge_count(edges)
   {
@@ -43,40 +69,70 @@ public:
   {
     m_ends.reserve(faces);
     m_parents.reserve(faces);
-    m_vertices.reserve(corners);
-    m_halfedges.reserve(corners);
+    m_corners.reserve(corners);
   }
 
   /// adds corner (vertex, halfedge id to the next corner) to the open face
   void corner(std::size_t vertex, std::size_t halfedge)
   {
-    m_vertices.push_back(static_cast<Index>(vertex));
-    m_halfedges.push_back(static_cast<Index>(halfedge));
+    m_corners.push_back(Corner{static_cast<Index>(vertex), static_cast<Index>(halfedge)});
   }
 
   /// closes the open face
   void close_face(std::size_t parent)
   {
-    m_ends.push_back(m_vertices.size());
+    m_ends.push_back(m_corners.size());
     m_parents.push_back(static_cast<Index>(parent));
+    ++m_face_count;
+  }
+
+  /// makes room for `faces` faces of `face_size` corners each, to be written
+  /// by position; with `parents`, the parent of every face too
+  void resize_uniform(std::size_t faces, int face_size, bool parents)
+  {
+    m_uniform_size = static_cast<std::size_t>(face_size);
+    m_face_count = faces;
+    m_corners.resize_for_overwrite(faces * m_uniform_size);
+    if(parents)
+      m_parents.resize_for_overwrite(faces);
+  }
+  void set_corner(std::size_t corner, std::size_t vertex, std::size_t halfedge)
+  {
+    m_corners[corner] = Corner{static_cast<Index>(vertex), static_cast<Index>(halfedge)};
+  }
+  void set_parent(std::size_t face, std::size_t parent)
+  {
+    if(m_parents.size() != 0)
+      m_parents[face] = static_cast<Index>(parent);
   }
 
   std::size_t number_of_vertices() const { return m_vertex_count; }
   std::size_t number_of_edges() const { return m_edge_count; }
-  std::size_t number_of_faces() const { return m_parents.size(); }
-  std::size_t face_begin(std::size_t f) const { return f == 0 ? 0 : m_ends[f - 1]; }
-  std::size_t face_end(std::size_t f) const { return m_ends[f]; }
-  std::size_t vertex(std::size_t corner) const { return m_vertices[corner]; }
-  std::size_t halfedge(std::size_t corner) const { return m_halfedges[corner]; }
-  std::size_t parent(std::size_t f) const { return m_parents[f]; }
+  std::size_t number_of_faces() const { return m_face_count; }
+  std::size_t number_of_corners() const { return m_corners.size(); }
+  std::size_t face_begin(std::size_t f) const
+  {
+    return m_uniform_size != 0 ? f * m_uniform_size : (f == 0 ? 0 : m_ends[f - 1]);
+  }
+  std::size_t face_end(std::size_t f) const { return m_uniform_size != 0 ? (f + 1) * m_uniform_size : m_ends[f]; }
+  std::size_t vertex(std::size_t corner) const { return m_corners[corner].vertex; }
+  std::size_t halfedge(std::size_t corner) const { return m_corners[corner].halfedge; }
+  const Corner* corners() const { return m_corners.data(); }
+  bool has_parents() const { return m_parents.size() == m_face_count; }
+  std::size_t parent(std::size_t f) const
+  {
+    CGAL_precondition(has_parents());
+    return m_parents[f];
+  }
 
 private:
   std::size_t m_vertex_count;
   std::size_t m_edge_count;
-  std::vector<Index> m_vertices;
-  std::vector<Index> m_halfedges;
-  std::vector<std::size_t> m_ends; // one past the last corner of each face
-  std::vector<Index> m_parents;
+  std::size_t m_face_count = 0;
+  std::size_t m_uniform_size = 0; // 0: faces of any size, ended by m_ends
+  Raw_array<Corner> m_corners;
+  Raw_array<std::size_t> m_ends; // one past the last corner of each face
+  Raw_array<Index> m_parents;
 };
 
 // Empty the mesh but keep its property maps, so that a vertex point map (or
@@ -187,13 +243,87 @@ void set_descriptors(const CGAL::Surface_mesh<P>&, const Face_soup& soup,
 }
 
 
-// Surface_mesh: the mesh is resized to the new counts, and vertex i, halfedge
-// id and face f of the soup are the mesh's indices i, id and f, so nothing is
-// looked up and no element is pushed one by one. The mesh is not cleared
-// (that would free and reallocate every array): old vertices keep their
-// indices, and so the values of other vertex property maps; values of other
-// edge, halfedge and face property maps are stale and must be carried
-// explicitly (see `Vertex_data` and face inheritance).
+/*
+ * Surface_mesh: the halfedges, faces and vertices of a mesh already resized
+ * to the soup's counts are wired in place: vertex i, halfedge id and face f of
+ * the soup are the mesh's indices i, id and f, so nothing is looked up and no
+ * element is pushed one by one.
+ *
+ * Every halfedge belongs to one face, so the faces are wired in parallel
+ * chunks by `loop`. The halfedge of a vertex is what the sequential loop
+ * leaves there: the incoming halfedge of the last face (in soup order) around
+ * the vertex, or its incoming border halfedge; it is written in a pass of its
+ * own, in soup order.
+ */
+template <class P>
+void wire_surface_mesh(CGAL::Surface_mesh<P>& mesh, const Face_soup& soup, const Parallel_loop& loop)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using size_type = typename SM::size_type;
+  using V = typename SM::Vertex_index;
+  using H = typename SM::Halfedge_index;
+  using F = typename SM::Face_index;
+
+  const std::size_t face_count = soup.number_of_faces();
+  const std::size_t halfedge_count = 2 * soup.number_of_edges();
+  CGAL_precondition(mesh.number_of_halfedges() == halfedge_count && mesh.number_of_faces() == face_count);
+  const bool closed = soup.number_of_corners() == halfedge_count; // every halfedge has a face
+  std::vector<char> has_face(closed ? 0 : halfedge_count, 0);
+  const Face_soup::Corner* corners = soup.corners();
+
+  loop.for_range(face_count, 1024, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f) {
+      const F face(static_cast<size_type>(f));
+      const std::size_t begin = soup.face_begin(f), end = soup.face_end(f);
+      for(std::size_t k = begin; k < end; ++k) {
+        const std::size_t next_corner = (k + 1 == end) ? begin : k + 1;
+        const H h(static_cast<size_type>(corners[k].halfedge));
+        mesh.set_target(h, V(static_cast<size_type>(corners[next_corner].vertex)));
+        mesh.set_next(h, H(static_cast<size_type>(corners[next_corner].halfedge)));
+        mesh.set_face(h, face);
+        if(!closed)
+          has_face[corners[k].halfedge] = 1;
+      }
+      mesh.set_halfedge(face, H(static_cast<size_type>(corners[begin].halfedge)));
+    }
+  });
+  for(std::size_t f = 0; f < face_count; ++f) {
+    const std::size_t begin = soup.face_begin(f), end = soup.face_end(f);
+    for(std::size_t k = begin; k < end; ++k) {
+      const std::size_t next_corner = (k + 1 == end) ? begin : k + 1;
+      mesh.set_halfedge(V(static_cast<size_type>(corners[next_corner].vertex)),
+                        H(static_cast<size_type>(corners[k].halfedge)));
+    }
+  }
+  if(closed)
+    return;
+  // border halfedges: no face; they end where their opposite starts, and the
+  // next one starts where this one ends
+  for(std::size_t id = 0; id < halfedge_count; ++id)
+    if(!has_face[id]) {
+      const H border(static_cast<size_type>(id));
+      mesh.set_face(border, SM::null_face());
+      mesh.set_target(border, mesh.target(mesh.prev(H(static_cast<size_type>(id ^ 1)))));
+    }
+  for(std::size_t id = 0; id < halfedge_count; ++id) {
+    if(has_face[id])
+      continue;
+    const H border(static_cast<size_type>(id));
+    // rotate around target(border), from the face halfedge leaving it, to the border halfedge leaving it
+    H around(static_cast<size_type>(id ^ 1));
+    while(!mesh.is_border(around))
+      around = mesh.opposite(mesh.prev(around));
+    mesh.set_next(border, around);
+    mesh.set_halfedge(mesh.target(border), border);
+  }
+}
+
+// Surface_mesh: the mesh is resized to the new counts and wired in place (see
+// `wire_surface_mesh`). The mesh is not cleared (that would free and
+// reallocate every array): old vertices keep their indices, and so the values
+// of other vertex property maps; values of other edge, halfedge and face
+// property maps are stale and must be carried explicitly (see `Vertex_data`
+// and face inheritance).
 template <class P, class VertexPointMap, class Point>
 void rebuild_mesh(CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const std::vector<Point>& points,
                   const Face_soup& soup,
@@ -202,8 +332,6 @@ void rebuild_mesh(CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const 
 {
   using SM = CGAL::Surface_mesh<P>;
   using V = typename SM::Vertex_index;
-  using H = typename SM::Halfedge_index;
-  using F = typename SM::Face_index;
 
   CGAL_precondition(!mesh.has_garbage());
   mesh.resize(static_cast<typename SM::size_type>(soup.number_of_vertices()),
@@ -211,44 +339,7 @@ void rebuild_mesh(CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const 
               static_cast<typename SM::size_type>(soup.number_of_faces()));
   for(std::size_t i = 0; i < soup.number_of_vertices(); ++i)
     put(vpm, V(static_cast<typename SM::size_type>(i)), points[i]);
-  std::vector<char> has_face(2 * soup.number_of_edges(), 0);
-  for(std::size_t f = 0; f < soup.number_of_faces(); ++f) {
-    const F face(static_cast<typename SM::size_type>(f));
-    const std::size_t begin = soup.face_begin(f), end = soup.face_end(f);
-    for(std::size_t k = begin; k < end; ++k) {
-      const std::size_t next_corner = (k + 1 == end) ? begin : k + 1;
-      const std::size_t id = soup.halfedge(k);
-      const H h(static_cast<typename SM::size_type>(id));
-      const V to(static_cast<typename SM::size_type>(soup.vertex(next_corner)));
-      mesh.set_target(h, to);
-      mesh.set_next(h, H(static_cast<typename SM::size_type>(soup.halfedge(next_corner))));
-      mesh.set_face(h, face);
-      mesh.set_halfedge(to, h);
-      has_face[id] = 1;
-    }
-    mesh.set_halfedge(face, H(static_cast<typename SM::size_type>(soup.halfedge(begin))));
-  }
-  if(soup.face_end(soup.number_of_faces() - 1) == has_face.size())
-    return set_descriptors(mesh, soup, new_vertices, new_faces); // closed: every halfedge has a face
-  // border halfedges: no face; they end where their opposite starts, and the
-  // next one starts where this one ends
-  for(std::size_t id = 0; id < has_face.size(); ++id)
-    if(!has_face[id]) {
-      const H border(static_cast<typename SM::size_type>(id));
-      mesh.set_face(border, SM::null_face());
-      mesh.set_target(border, mesh.target(mesh.prev(H(static_cast<typename SM::size_type>(id ^ 1)))));
-    }
-  for(std::size_t id = 0; id < has_face.size(); ++id) {
-    if(has_face[id])
-      continue;
-    const H border(static_cast<typename SM::size_type>(id));
-    // rotate around target(border), from the face halfedge leaving it, to the border halfedge leaving it
-    H around(static_cast<typename SM::size_type>(id ^ 1));
-    while(!mesh.is_border(around))
-      around = mesh.opposite(mesh.prev(around));
-    mesh.set_next(border, around);
-    mesh.set_halfedge(mesh.target(border), border);
-  }
+  wire_surface_mesh(mesh, soup, Parallel_loop(1));
   set_descriptors(mesh, soup, new_vertices, new_faces);
 }
 

@@ -3,9 +3,13 @@
 #ifndef CGAL_SUBDIV_STENCIL_TABLE_H
 #define CGAL_SUBDIV_STENCIL_TABLE_H
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Origin.h>
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/internal/Raw_array.h>
+#include <CGAL/Subdiv/internal/parallel.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,6 +29,19 @@ template <class T>
 struct Is_point<T, std::void_t<decltype(std::declval<const T&>() - CGAL::ORIGIN)>> : std::true_type
 {
 };
+
+template <class T, class = void>
+struct Is_double_point_3 : std::false_type
+{
+};
+template <class T>
+struct Is_double_point_3<T, std::void_t<typename CGAL::Kernel_traits<T>::Kernel::Point_3>>
+  : std::bool_constant<std::is_same<typename CGAL::Kernel_traits<T>::Kernel::Point_3, T>::value &&
+                       std::is_same<typename CGAL::Kernel_traits<T>::Kernel::FT, double>::value>
+{
+};
+
+struct Stencil_table_access;
 
 } // namespace internal
 
@@ -80,12 +97,24 @@ public:
   }
 
   std::size_t number_of_stencils() const { return m_ends.size(); }
+  /// throws `Bad_input` unless `n` is the number of sources
+  void check_sources(std::size_t n) const
+  {
+    internal::require(n == m_sources, "the stencil table needs " + std::to_string(m_sources) +
+                                        " source values, got " + std::to_string(n));
+  }
   std::size_t number_of_sources() const { return m_sources; }
   std::size_t number_of_terms() const { return m_indices.size(); }
   std::size_t stencil_begin(std::size_t i) const { return i == 0 ? 0 : m_ends[i - 1]; }
   std::size_t stencil_end(std::size_t i) const { return m_ends[i]; }
   Index source(std::size_t term) const { return m_indices[term]; }
   const FT& weight(std::size_t term) const { return m_weights[term]; }
+
+  /// the bytes of the table's arrays (row ends, source indices, weights)
+  std::size_t memory_bytes() const
+  {
+    return m_ends.size() * sizeof(std::size_t) + m_indices.size() * sizeof(Index) + m_weights.size() * sizeof(FT);
+  }
 
   /// the table of `finer` applied after this one: row i of the result is
   /// sum_k finer(i, k) * row k of this table
@@ -130,14 +159,46 @@ public:
    * value per stencil). Points (`Point_2`, `Point_3`) are combined affinely;
    * other values need `value * weight` and `value + value`, with the weight
    * converted to `double` unless the value type is `FT`.
+   * `threads`: 1 (the default) in this thread, 0 TBB's choice, n at most n
+   * threads (with TBB; see `CGAL::Subdiv::threads()`); the values are the
+   * same bit for bit.
    */
   template <class Value>
-  void apply(const std::vector<Value>& in, std::vector<Value>& out) const
+  void apply(const std::vector<Value>& in, std::vector<Value>& out, int threads = 1) const
   {
-    internal::require(in.size() == m_sources, "the stencil table needs " + std::to_string(m_sources) +
-                                                " source values, got " + std::to_string(in.size()));
+    check_sources(in.size());
     out.resize(number_of_stencils());
-    apply_range(in, out, 0, number_of_stencils());
+    internal::Parallel_loop loop(threads);
+    if constexpr(!std::is_floating_point<FT>::value)
+      loop = internal::Parallel_loop(1); // exact numbers: one thread
+    loop.for_range(number_of_stencils(), 4096,
+                   [&](std::size_t first, std::size_t last) { apply_range(in, out, first, last); });
+  }
+
+  /*!
+   * the same on arrays of doubles (positions, normals, colours, UVs, any
+   * vector-valued vertex data), for a table of double weights: `in` holds
+   * `dimension` doubles per source, `out` receives `dimension` doubles per
+   * stencil; the result is the same bit for bit as `apply` on points with
+   * double coordinates.
+   */
+  void apply(const double* in, double* out, std::size_t dimension, int threads = 1) const
+  {
+    apply_flat(dimension, [in, dimension](Index s) { return in + std::size_t(s) * dimension; },
+               [out, dimension](std::size_t i) { return out + i * dimension; }, threads);
+  }
+
+  /// the same on `std::array<double, N>` values
+  template <std::size_t N>
+  void apply(const std::vector<std::array<double, N>>& in, std::vector<std::array<double, N>>& out,
+             int threads = 1) const
+  {
+    check_sources(in.size());
+    out.resize(number_of_stencils());
+    const std::array<double, N>* source = in.data();
+    std::array<double, N>* target = out.data();
+    apply_flat(N, [source](Index s) { return source[s].data(); }, [target](std::size_t i) { return target[i].data(); },
+               threads);
   }
 
   /// evaluates stencils [first, last) only (e.g. one chunk per thread)
@@ -152,7 +213,21 @@ public:
   Value evaluate(const std::vector<Value>& in, std::size_t i) const
   {
     const std::size_t begin = stencil_begin(i), end = stencil_end(i);
-    if constexpr(internal::Is_point<Value>::value) {
+    if constexpr(internal::Is_point<Value>::value && internal::Is_double_point_3<Value>::value &&
+                 std::is_same<FT, double>::value) {
+      // three doubles: the operations of the vector sum below, without the kernel's objects
+      const Value& p = in[m_indices[begin]];
+      const double w0 = m_weights[begin];
+      double x = p.x() * w0, y = p.y() * w0, z = p.z() * w0;
+      for(std::size_t t = begin + 1; t < end; ++t) {
+        const Value& q = in[m_indices[t]];
+        const double w = m_weights[t];
+        x = x + q.x() * w;
+        y = y + q.y() * w;
+        z = z + q.z() * w;
+      }
+      return Value(x, y, z);
+    } else if constexpr(internal::Is_point<Value>::value) {
       auto sum = (in[m_indices[begin]] - CGAL::ORIGIN) * m_weights[begin];
       for(std::size_t t = begin + 1; t < end; ++t)
         sum = sum + (in[m_indices[t]] - CGAL::ORIGIN) * m_weights[t];
@@ -171,10 +246,87 @@ public:
   }
 
 private:
+  friend struct internal::Stencil_table_access;
+
+  // evaluates stencils [first, last) on values of `dimension` doubles, from
+  // in(s) (a pointer to source s's values) to out(i)
+  template <int D, class In, class Out>
+  void apply_rows(std::size_t first, std::size_t last, std::size_t dimension, const In& in, const Out& out) const
+  {
+    const std::size_t* ends = m_ends.data();
+    const Index* indices = m_indices.data();
+    const FT* weights = m_weights.data();
+    const std::size_t n = D > 0 ? std::size_t(D) : dimension;
+    for(std::size_t i = first; i < last; ++i) {
+      const std::size_t begin = i == 0 ? 0 : ends[i - 1], end = ends[i];
+      double* o = out(i);
+      if(begin == end) {
+        for(std::size_t d = 0; d < n; ++d)
+          o[d] = 0;
+        continue;
+      }
+      if constexpr(D == 3) { // positions, normals: three named sums, kept in registers
+        const double* x = in(indices[begin]);
+        const double w0 = weights[begin];
+        double a = x[0] * w0, b = x[1] * w0, c = x[2] * w0;
+        for(std::size_t t = begin + 1; t < end; ++t) {
+          const double* y = in(indices[t]);
+          const double w = weights[t];
+          a = a + y[0] * w;
+          b = b + y[1] * w;
+          c = c + y[2] * w;
+        }
+        o[0] = a;
+        o[1] = b;
+        o[2] = c;
+      } else if constexpr(D > 0) {
+        double acc[D];
+        const double* x = in(indices[begin]);
+        const double w0 = weights[begin];
+        for(int d = 0; d < D; ++d)
+          acc[d] = x[d] * w0;
+        for(std::size_t t = begin + 1; t < end; ++t) {
+          const double* y = in(indices[t]);
+          const double w = weights[t];
+          for(int d = 0; d < D; ++d)
+            acc[d] = acc[d] + y[d] * w;
+        }
+        for(int d = 0; d < D; ++d)
+          o[d] = acc[d];
+      } else {
+        const double* x = in(indices[begin]);
+        const double w0 = weights[begin];
+        for(std::size_t d = 0; d < n; ++d)
+          o[d] = x[d] * w0;
+        for(std::size_t t = begin + 1; t < end; ++t) {
+          const double* y = in(indices[t]);
+          const double w = weights[t];
+          for(std::size_t d = 0; d < n; ++d)
+            o[d] = o[d] + y[d] * w;
+        }
+      }
+    }
+  }
+
+  template <class In, class Out>
+  void apply_flat(std::size_t dimension, const In& in, const Out& out, int threads) const
+  {
+    static_assert(std::is_same<FT, double>::value, "the flat apply needs a table of double weights");
+    internal::Parallel_loop(threads).for_range(number_of_stencils(), 4096, [&](std::size_t first, std::size_t last) {
+      switch(dimension) {
+        case 1: apply_rows<1>(first, last, 1, in, out); break;
+        case 2: apply_rows<2>(first, last, 2, in, out); break;
+        case 3: apply_rows<3>(first, last, 3, in, out); break;
+        case 4: apply_rows<4>(first, last, 4, in, out); break;
+        default: apply_rows<0>(first, last, dimension, in, out);
+      }
+    });
+  }
+
   std::size_t m_sources;
-  std::vector<std::size_t> m_ends; // one past the last term of each stencil
-  std::vector<Index> m_indices;
-  std::vector<FT> m_weights;
+  internal::Raw_array<std::size_t> m_ends; // one past the last term of each stencil
+  internal::Raw_array<Index> m_indices;
+  internal::Value_array<FT> m_weights;
 };
 
 } // namespace Subdiv

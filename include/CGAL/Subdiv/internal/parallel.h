@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_INTERNAL_PARALLEL_H
+#define CGAL_SUBDIV_INTERNAL_PARALLEL_H
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * How the fast paths run their loops: `threads == 1` runs every loop in the
+ * calling thread; otherwise, when the package is compiled with TBB
+ * (CGAL_LINKED_WITH_TBB, the CMake option SUBDIV_WITH_TBB), loops are split
+ * into chunks run by TBB: `threads == 0` uses TBB's default (all cores, or
+ * what a `tbb::global_control` allows), `threads > 1` at most that many.
+ * Every parallel loop of the package writes each output element from exactly
+ * one iteration, computed as the sequential loop computes it, so the results
+ * are the same bit for bit with any number of threads.
+ */
+class Parallel_loop
+{
+public:
+  explicit Parallel_loop(int threads = 1) : m_threads(threads < 0 ? 1 : threads) {}
+
+  int threads() const { return m_threads; }
+
+  bool is_parallel() const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    return m_threads != 1;
+#else
+    return false;
+#endif
+  }
+
+  /// calls f(begin, end) on chunks that cover [0, n), each chunk at least
+  /// `grain` long (but the last); in this thread when sequential
+  template <class F>
+  void for_range(std::size_t n, std::size_t grain, const F& f) const
+  {
+    if(n == 0)
+      return;
+#ifdef CGAL_LINKED_WITH_TBB
+    if(is_parallel() && n > grain) {
+      run([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                          [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+      });
+      return;
+    }
+#endif
+    (void)grain;
+    f(std::size_t(0), n);
+  }
+
+  /// runs f() in an arena of `threads` threads (or in TBB's default one)
+  template <class F>
+  void run(const F& f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_threads > 1) {
+      tbb::task_arena arena(m_threads);
+      arena.execute(f);
+      return;
+    }
+#endif
+    f();
+  }
+
+private:
+  int m_threads;
+};
+
+/// one T per thread (scratch space of parallel loops), found by the thread's
+/// index in its TBB arena (a cheap look-up, done once per element)
+template <class T>
+class Per_thread
+{
+public:
+  Per_thread()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    m_values.resize(static_cast<std::size_t>(tbb::info::default_concurrency()) + 1);
+#else
+    m_values.resize(1);
+#endif
+  }
+
+  T& local()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    const int index = tbb::this_task_arena::current_thread_index();
+    if(index >= 0 && static_cast<std::size_t>(index) < m_values.size())
+      return m_values[static_cast<std::size_t>(index)];
+    return m_others.local();
+#else
+    return m_values[0];
+#endif
+  }
+
+private:
+  std::vector<T> m_values;
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<T> m_others; // threads beyond the default concurrency
+#endif
+};
+
+/// the tag of the named parameter `threads` (see `CGAL::Subdiv::threads()`)
+struct threads_t
+{
+};
+
+template <class NamedParameters>
+Parallel_loop parallel_loop(const NamedParameters& np)
+{
+  return Parallel_loop(parameters::choose_parameter(parameters::get_parameter(np, threads_t()), 1));
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivFunctions
+ * named parameter of `subdivide()`, the scheme functions and
+ * `make_stencil_table()`: the number of threads of the fast paths.
+ * 1 (the default) runs in the calling thread; 0 lets TBB choose (all cores,
+ * or what a `tbb::global_control` allows); n > 1 uses at most n threads. Without TBB (`SUBDIV_WITH_TBB=OFF`, or a build that does not
+ * define `CGAL_LINKED_WITH_TBB`) everything runs in the calling thread. The
+ * results do not depend on the number of threads, bit for bit.
+ * `np` lets it join other named parameters:
+ * `threads(2, CGAL::parameters::number_of_iterations(3))`.
+ */
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<int, internal::threads_t, NamedParameters>
+threads(int n, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return {n, np};
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_INTERNAL_PARALLEL_H
