@@ -330,8 +330,8 @@ subdiv_cli_error(analyse_valence_too_small 1 "the valence of an interior vertex 
 subdiv_cli_error(analyse_valence_too_large 1 "must be between 3 and 32, got 33" ARGS analyse --scheme catmull-clark --valence 33)
 subdiv_cli_error(analyse_border_zero 1 "the number of faces at a border vertex must be between 1 and 32, got 0"
   ARGS analyse --scheme loop --valence 0 --boundary)
-subdiv_cli_error(analyse_sqrt3_border 1 "border vertices of sqrt3 are not analysed"
-  ARGS analyse --scheme sqrt3 --valence 4 --boundary)
+subdiv_cli_test(analyse_sqrt3_border ARGS analyse --scheme sqrt3 --valence 4 --boundary
+  STDOUT_REGEX "^sqrt3 \\(Kobbelt\\) \\(sqrt3\\) at a border vertex with 4 faces\n.*limit mask, centre")
 subdiv_cli_error(analyse_doo_sabin_border 1 "border vertices of doo-sabin are not analysed"
   ARGS analyse --scheme doo-sabin --valence 4 --boundary --json)
 subdiv_cli_error(analyse_linear 1 "linear has no smoothness to analyse" ARGS analyse --scheme linear --valence 6)

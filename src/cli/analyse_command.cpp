@@ -36,9 +36,9 @@ the smoothness verdict and the limit mask.
                     with --boundary the number of faces around the border
                     vertex, 1 <= N <= 32 (the exact analysis costs
                     about the cube of the neighbourhood size: seconds at 32)
-  --boundary        analyse a border vertex (loop, loop-warren, catmull-clark,
-                    butterfly, modified-butterfly; the sqrt3 schemes and
-                    doo-sabin are analysed at interior configurations only)
+  --boundary        analyse a border vertex (every surface scheme but
+                    doo-sabin, which is analysed at interior faces only; the
+                    sqrt3 schemes over a resting and a refining step)
   --degree K        bspline and bezier (default 3)
   --a A, --b B      corner-cutting, 0 < A < B < 1 (default 1/4, 3/4)
   --w W             four-point tension, 0 <= W < 1/4 (default 1/16)

@@ -339,8 +339,7 @@ void write_scheme(const Scheme_tables& t, Output& out)
   analysis_tables(t.border, "Eigen-analysis at border vertices with k faces", "k");
   if(t.border.empty())
     md << "Border vertices: not analysed ("
-       << (t.facts->dual ? "a dual scheme is analysed at interior faces" : "the border rules alternate between steps")
-       << ").\n";
+       << (t.facts->dual ? "a dual scheme is analysed at interior faces only" : "not supported") << ").\n";
 }
 
 void write_surface_csv(const std::vector<Scheme_tables>& all, Output& out)

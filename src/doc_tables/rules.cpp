@@ -71,9 +71,20 @@ std::vector<Rule> rules_of(int n, bool boundary)
   if constexpr(Traits::face_centred) { // dual: the new vertex of corner 0 of the central n-gon
     record("corner", "The new vertex of corner 0 of the central face (labels 0..n-1: its corners)",
            [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
-  } else if constexpr(Traits::steps == 2) { // sqrt3 split: vertex and face points
-    record("vertex", "The new position of the centre (label 0)",
-           [&](auto& acc) { mask.vertex_node(mesh, mesh.source(h), acc); });
+  } else if constexpr(Traits::steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
+    if(boundary) {
+      record("border vertex (refining step)", "The new position of the centre (label 0) on a step that refines the border",
+             [&](auto& acc) { mask.border_vertex_node(mesh, mesh.opposite(h), acc); });
+      record("border vertex (resting step)", "The new position of the centre on a step that leaves the border alone",
+             [&](auto& acc) { mask.resting_border_vertex_node(mesh, mesh.source(h), acc); });
+      record("border edge, first third", "The new vertex at 1/3 of the border edge from the centre to label 1 (refining step)",
+             [&](auto& acc) { mask.border_edge_node(mesh, h, 1, acc); });
+      record("border edge, second third", "The new vertex at 2/3 of the border edge from the centre to label 1 (refining step)",
+             [&](auto& acc) { mask.border_edge_node(mesh, h, 2, acc); });
+    } else {
+      record("vertex", "The new position of the centre (label 0)",
+             [&](auto& acc) { mask.vertex_node(mesh, mesh.source(h), acc); });
+    }
     record("face", "The new vertex of the face (0, 1, 2)", [&](auto& acc) { mask.face_node(mesh, mesh.face(h), acc); });
   } else {
     const std::string prefix = boundary ? "border " : "";
