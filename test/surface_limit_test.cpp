@@ -332,6 +332,181 @@ TEST(ProjectToLimit, sqrt3_agrees_with_deep_refinement)
   EXPECT_LE(worst, std::pow(4.0 / 9, 4));
 }
 
+// sqrt3 border vertices (analysed over a resting step and a refining step):
+// the limit point is exactly invariant under refinement, in both phases of
+// the border (after an odd number of steps the next step refines the border,
+// and border vertices are evaluated one step later), valences 4, 6, 8 and
+// border vertices with 1 to 4 faces
+TEST(ProjectToLimit, sqrt3_border_vertices_exactly_invariant)
+{
+  const auto one_step = [](Exact_mesh& m) { SD::sqrt3_subdivision(m); };
+  // the grid as read (its border rests first), after one step (the border is
+  // refined first) and after two
+  Exact_mesh mesh = grid<Exact_mesh>(2, 2, true);
+  for(auto v : mesh.vertices()) // not planar
+    mesh.point(v) = QK::Point_3(mesh.point(v).x(), mesh.point(v).y(), Q(int(v.idx() % 4)) / Q(3));
+  Exact_mesh a = mesh, b = mesh, c = mesh, d = mesh;
+  SD::project_to_limit<SD::Sqrt3_mask>(a);
+  one_step(b);
+  SD::project_to_limit<SD::Sqrt3_mask>(b);
+  one_step(c);
+  one_step(c);
+  SD::project_to_limit<SD::Sqrt3_mask>(c);
+  // three steps: the border is refined next, and most border vertices have
+  // the analysed neighbourhood (evaluated one step later all the same)
+  one_step(d);
+  one_step(d);
+  one_step(d);
+  ASSERT_TRUE(SD::Sqrt3_split<Exact_mesh>(d).refines_border());
+  SD::project_to_limit<SD::Sqrt3_mask>(d);
+  for(auto v : mesh.vertices()) {
+    EXPECT_EQ(a.point(v), b.point(v)) << "vertex " << v.idx();
+    EXPECT_EQ(a.point(v), c.point(v)) << "vertex " << v.idx();
+    EXPECT_EQ(a.point(v), d.point(v)) << "vertex " << v.idx();
+  }
+  // the interpolating scheme keeps the points, border vertices included
+  Mesh open = grid(3, 2, true);
+  SD::interpolating_sqrt3_subdivision(open);
+  Mesh kept = open;
+  SD::project_to_limit<SD::Interpolating_sqrt3_mask>(kept);
+  EXPECT_EQ(points_of(kept), points_of(open));
+}
+
+// and agrees with deep refinement (double), border vertices on the border
+// curve: the ternary cubic B-spline, (p_prev + 4 p + p_next) / 6
+TEST(ProjectToLimit, sqrt3_border_agrees_with_deep_refinement)
+{
+  Mesh mesh = grid(3, 2, true);
+  for(V v : mesh.vertices())
+    mesh.point(v) = K::Point_3(mesh.point(v).x(), mesh.point(v).y(), std::sin(double(v.idx())));
+  Mesh limit = mesh;
+  SD::project_to_limit<SD::Sqrt3_mask>(limit);
+  Mesh deep = mesh;
+  SD::sqrt3_subdivision(deep, CGAL::parameters::number_of_iterations(8));
+  double worst = 0;
+  for(V v : mesh.vertices())
+    worst = (std::max)(worst, distance(deep.point(v), limit.point(v)));
+  // four pairs of steps; the slowest configuration here (k = 4 border
+  // faces) contracts by (2 + 2 cos(pi / 4)) / 9 = 0.38 per pair
+  EXPECT_LE(worst, 5 * std::pow(0.38, 4));
+  for(V v : mesh.vertices()) {
+    const auto walk = SD::internal::border_halfedges_at(v, mesh);
+    if(walk.first == Mesh::null_halfedge())
+      continue;
+    const auto& p = mesh.point(mesh.source(walk.first));
+    const auto& q = mesh.point(v);
+    const auto& r = mesh.point(mesh.target(walk.second));
+    const K::Point_3 expected((p.x() + 4 * q.x() + r.x()) / 6, (p.y() + 4 * q.y() + r.y()) / 6,
+                              (p.z() + 4 * q.z() + r.z()) / 6);
+    EXPECT_LT(distance(limit.point(v), expected), 1e-14) << "vertex " << v.idx();
+  }
+}
+
+// Doo-Sabin: the limit point of a vertex is that of its vertex face (the face
+// the next step makes of the corners at it): the centroid of the corners at
+// an interior vertex; at a border vertex the midpoint of its two border
+// corners, 3/4 v + 1/8 (u + w) (the quadratic B-spline of the border
+// polygon), and v itself at a corner with a single face. Checked against the
+// refinement: the vertex face is face F + I + j of the next level (j: its
+// rank among the vertices with 3 or more faces), and keeps its index at every
+// further level (face faces come first, in face order); its corners converge
+// to the predicted point, by 1/2 per level inside and 3/4 at the border (the
+// eigenvalue of its interior corners), and at the border the midpoint of its
+// two border corners stays exactly on it.
+TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
+{
+  using EV = Exact_mesh::Vertex_index;
+  for(bool open : {false, true}) {
+    Exact_mesh mesh = open ? grid<Exact_mesh>(3, 2, false) : cube<Exact_mesh>();
+    if(open) { // a border vertex with 3 faces, an interior vertex of valence 5: one quad split in two triangles
+      Exact_mesh other = mesh;
+      mesh.clear();
+      std::vector<EV> v;
+      for(EV u : other.vertices())
+        v.push_back(mesh.add_vertex(QK::Point_3(other.point(u).x(), other.point(u).y(),
+                                                Q(int((u.idx() * 7) % 5)) / Q(4))));
+      for(auto f : other.faces()) {
+        std::vector<EV> corners;
+        for(EV u : CGAL::vertices_around_face(other.halfedge(f), other))
+          corners.push_back(v[u.idx()]);
+        if(f.idx() == 1) { // the quad (1, 2, 6, 5): two triangles
+          mesh.add_face(corners[0], corners[1], corners[2]);
+          mesh.add_face(corners[0], corners[2], corners[3]);
+        } else {
+          mesh.add_face(corners);
+        }
+      }
+    }
+    Exact_mesh limit = mesh;
+    SD::project_to_limit<SD::Doo_sabin_mask>(limit);
+    std::size_t interior_edges = 0;
+    for(auto e : mesh.edges())
+      interior_edges += mesh.is_border(e) ? 0 : 1;
+    Exact_mesh refined = mesh;
+    SD::doo_sabin_subdivision(refined);
+    std::size_t j = 0;
+    int tracked = 0;
+    for(EV v : mesh.vertices()) {
+      SCOPED_TRACE("vertex " + std::to_string(v.idx()));
+      int faces = 0;
+      bool border = false;
+      std::vector<EV> border_neighbours;
+      for(auto h : CGAL::halfedges_around_target(v, mesh)) {
+        if(mesh.is_border(h)) {
+          border = true;
+          border_neighbours.push_back(mesh.source(h));
+        } else {
+          ++faces;
+        }
+        if(mesh.is_border(mesh.opposite(h)))
+          border_neighbours.push_back(mesh.source(h));
+      }
+      const QK::Point_3& predicted = limit.point(v);
+      if(border) { // 3/4 v + 1/8 (u + w), or v at a single face
+        ASSERT_EQ(border_neighbours.size(), 2u);
+        const auto& p = mesh.point(v);
+        const auto& u = mesh.point(border_neighbours[0]);
+        const auto& w = mesh.point(border_neighbours[1]);
+        const Q a = faces == 1 ? Q(1) : Q(3) / Q(4), b = (Q(1) - a) / Q(2);
+        EXPECT_EQ(predicted, QK::Point_3(a * p.x() + b * (u.x() + w.x()), a * p.y() + b * (u.y() + w.y()),
+                                         a * p.z() + b * (u.z() + w.z())));
+      }
+      if(faces < 3)
+        continue;
+      // the vertex face, followed over 6 more levels in double
+      const std::size_t index = mesh.number_of_faces() + interior_edges + j++;
+      Mesh level;
+      for(EV u : refined.vertices())
+        level.add_vertex(K::Point_3(CGAL::to_double(refined.point(u).x()), CGAL::to_double(refined.point(u).y()),
+                                    CGAL::to_double(refined.point(u).z())));
+      for(auto f : refined.faces()) {
+        std::vector<V> corners;
+        for(EV u : CGAL::vertices_around_face(refined.halfedge(f), refined))
+          corners.push_back(V(u.idx()));
+        level.add_face(corners);
+      }
+      const K::Point_3 target(CGAL::to_double(predicted.x()), CGAL::to_double(predicted.y()),
+                              CGAL::to_double(predicted.z()));
+      const auto spread = [&](const Mesh& m) {
+        double d = 0;
+        for(V u : CGAL::vertices_around_face(m.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(index))), m))
+          d = (std::max)(d, distance(m.point(u), target));
+        return d;
+      };
+      const double first = spread(level);
+      ASSERT_GT(first, 0.0);
+      EXPECT_EQ(CGAL::vertices_around_face(level.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(index))), level)
+                  .size(),
+                static_cast<std::size_t>(faces));
+      SD::doo_sabin_subdivision(level, CGAL::parameters::number_of_iterations(6));
+      const double last = spread(level);
+      EXPECT_LE(last, first * (border ? 0.25 : 0.03)); // 0.75^6 = 0.18 (2/3 for a triangle), 0.5^6 = 0.016
+      ++tracked;
+    }
+    EXPECT_EQ(tracked, open ? 3 : 8); // the open mesh: 2 interior vertices, a border vertex with 3 faces
+  }
+}
+
 // ------------------------------------------------------------------ normals
 
 // planar meshes: every normal is exactly +z (faces counter-clockwise seen from
@@ -351,6 +526,11 @@ TEST(LimitNormals, planar_meshes_have_the_plane_normal)
   expect_plus_z(limit_normals_of<SD::Butterfly_mask>(triangles), "butterfly");
   expect_plus_z(limit_normals_of<SD::Modified_butterfly_mask>(triangles), "modified butterfly");
   expect_plus_z(limit_normals_of<SD::Linear_triangle_mask>(triangles), "linear");
+  // sqrt3 border vertices (tangent masks of the border analysis where C1), Doo-Sabin (face normals)
+  Mesh coarse = grid(4, 3, true);
+  expect_plus_z(limit_normals_of<SD::Sqrt3_mask>(coarse), "sqrt3");
+  expect_plus_z(limit_normals_of<SD::Interpolating_sqrt3_mask>(coarse), "interpolating sqrt3");
+  expect_plus_z(limit_normals_of<SD::Doo_sabin_mask>(quads), "Doo-Sabin");
 }
 
 // a subdivided icosahedron is nearly a sphere: the limit normal is close to
@@ -563,17 +743,14 @@ TEST(ProjectToLimit, epeck)
 TEST(LimitErrors, refusals_name_the_problem)
 {
   Mesh quads = cube();
-  EXPECT_NE(testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Doo_sabin_mask>(quads); })
-              .find("Doo-Sabin is a dual scheme"),
-            std::string::npos);
   EXPECT_NE(testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Loop_mask>(quads); })
               .find("needs a mesh whose faces all have 3 vertices"),
             std::string::npos);
-  Mesh open = grid(2, 2, true);
-  const std::string sqrt3 = testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Sqrt3_mask>(open); });
-  EXPECT_NE(sqrt3.find("project_to_limit (sqrt3 (Kobbelt)): vertex 0: border vertices of sqrt3"), std::string::npos)
-    << sqrt3;
-  EXPECT_EQ(points_of(open), points_of(grid(2, 2, true))); // unchanged
+  // Doo-Sabin at an interior vertex of valence 2 (two quads glued along their border): no vertex face
+  Mesh pillow = mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}});
+  const std::string dual = testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Doo_sabin_mask>(pillow); });
+  EXPECT_NE(dual.find("project_to_limit (Doo-Sabin): vertex 0: "), std::string::npos) << dual;
+  EXPECT_EQ(points_of(pillow)[0], K::Point_3(0, 0, 0)); // unchanged
 }
 
 } // namespace

@@ -38,7 +38,6 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
@@ -254,14 +253,29 @@ Limit_masks compute_limit_masks(int valence, bool border, const Args&... args)
   masks.subdominant = analysis.subdominant;
   masks.c1_necessary = analysis.c1_necessary;
   masks.c1 = analysis.c1;
-  const std::string where = analysis.scheme + (border ? " at a border vertex with " + std::to_string(valence) + " faces"
-                                                      : " at an interior vertex of valence " + std::to_string(valence));
+  const std::string where =
+    analysis.scheme + (border ? " at a border vertex with " + std::to_string(valence) + " faces"
+                              : (Traits::face_centred ? " at a face with " + std::to_string(valence) + " corners"
+                                                      : " at an interior vertex of valence " + std::to_string(valence)));
   require(analysis.one_is_simple_and_dominant, where + ": 1 is not a simple dominant eigenvalue, there is no limit mask");
   const Local_subdivision_matrix<CGAL::Exact_rational> exact =
     local_subdivision_matrix<MaskTemplate, CGAL::Exact_rational>(valence, border, analysis.rings, args...);
   require(exact.invariant && exact.S.rows() == analysis.matrix.rows(), where + ": the exact local matrix does not match");
   masks.limit = normalised_left_fixed_vector(exact.S);
   require(!masks.limit.empty(), where + ": the limit mask is not unique");
+  if constexpr(Traits::face_centred) {
+    // a dual scheme: the analysis is centred at an n-gon (labels 0..n-1 its
+    // corners); the evaluator uses the limit mask only if it is the centroid
+    // of the central face (then the face alone is invariant and its limit
+    // point does not depend on the faces around it)
+    for(std::size_t i = 0; i < masks.limit.size(); ++i)
+      require(masks.limit[i] == (i < static_cast<std::size_t>(valence)
+                                   ? CGAL::Exact_rational(CGAL::Exact_rational(1) / CGAL::Exact_rational(valence))
+                                   : CGAL::Exact_rational(0)),
+              where + ": the limit mask of the face is not its centroid");
+    masks.tangents = false;
+    return masks;
+  }
 
   // the neighbourhood of rings + 1 rings on the analysis' own patch
   const Patch patch = build_patch(Traits::face_size, false, valence, border, masks.rings + 2);
@@ -356,9 +370,16 @@ inline double norm(const std::array<double, 3>& a)
  * configuration it met: reuse one evaluator for many meshes of the same
  * scheme. Make one with `make_limit_evaluator<MaskTemplate>(args...)`.
  *
- * Dual schemes (`Doo_sabin_mask`) are refused with `Bad_input`: their vertices
- * are not points of the limit surface and the analysis has no vertex masks
- * for them (it is centred at faces).
+ * Dual schemes (`Doo_sabin_mask`): a vertex's limit point is that of its
+ * vertex face (the face the next step makes of the corners at it): the
+ * centroid of the corners at an interior vertex (the limit mask of the
+ * analysis centred at that n-gon), the midpoint of the two border corners at
+ * a border vertex (the Chaikin border), the vertex itself at a corner with a
+ * single face; normals are face normals (see doc/limit.md).
+ *
+ * sqrt3 hosts: the border analysis is that of a resting step followed by a
+ * refining one; on a mesh whose next step refines the border, border
+ * vertices are evaluated on a copy refined once more.
  */
 template <template <class, class> class MaskTemplate, class... Args>
 class Limit_evaluator
@@ -469,7 +490,6 @@ public:
     using FT = internal::Point_FT<Point>;
     using Vector = internal::Point_vector<Point>;
     const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 0);
-    refuse_dual();
     constexpr bool callable = std::is_invocable<const Height&, const Point&>::value;
     std::vector<internal::Vertex_limit<Point>> results;
     const auto level_np = CGAL::parameters::number_of_iterations(levels).vertex_point_map(vpm);
@@ -516,9 +536,13 @@ public:
   {
     using Point = typename boost::property_traits<VPM>::value_type;
     using FT = internal::Point_FT<Point>;
-    refuse_dual();
     const auto m = mask<PolygonMesh, FT>();
     internal::check_mesh(mesh, vpm, m.name(), MaskTemplate<PolygonMesh, FT>::Host::required_face_size);
+    if constexpr(Traits::face_centred) {
+      std::vector<internal::Vertex_limit<Point>> results;
+      evaluate_dual(mesh, vpm, heights, results, caller + " (" + m.name() + ")");
+      return results;
+    }
     std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> targets(vertices(mesh).begin(),
                                                                                       vertices(mesh).end());
     std::vector<std::size_t> ids(targets.size());
@@ -532,12 +556,86 @@ public:
 private:
   using Traits = Analysis_host_traits<typename MaskTemplate<Analysis_mesh, double>::Host>;
 
-  static void refuse_dual()
+  // weights reported by a mask, scaled
+  template <class Vertex, class FT>
+  struct Scaled_weights
   {
-    if(Traits::face_centred)
-      throw Bad_input(MaskTemplate<Analysis_mesh, double>().name() +
-                      " is a dual scheme: its vertices are not points of the limit surface and the analysis has no "
-                      "vertex limit masks for it (its limit points are those of the faces)");
+    std::map<Vertex, FT>* weights;
+    FT scale;
+    void add(const Vertex& v, const FT& w) { (*weights)[v] += scale * w; }
+  };
+
+  /*
+   * Dual schemes (Doo-Sabin): the limit point of a vertex v is the limit of
+   * the face that the next step makes of the corners at v (the vertex face).
+   * Interior v of valence n: that face is an n-gon, and its limit is the
+   * centroid of its corners (the limit mask of the analysis centred at an
+   * n-gon, checked to be exactly that): (1/n) sum of the corner_node
+   * stencils of the corners at v. Border v: the border corners of the new
+   * faces at v (the corners of the first and last face around v, on the new
+   * border, joined by a border edge) are Chaikin points of the two border
+   * edges at v; the vertex face (k >= 3 faces) or the edge quad (k = 2) has
+   * that border edge, whose two ends are refined by Chaikin's rule on it
+   * alone and converge to its midpoint: the limit is the midpoint of the two
+   * border corners, 3/4 v + 1/8 (u + w) for the border neighbours u, w (the
+   * quadratic B-spline of the border polygon at v); a corner with a single
+   * face is kept (the limit is v). Tangent masks: none (face normals).
+   */
+  template <class Mesh, class VPM, class HeightMap>
+  void evaluate_dual(const Mesh& mesh, const VPM& vpm, const HeightMap* heights,
+                     std::vector<internal::Vertex_limit<typename boost::property_traits<VPM>::value_type>>& results,
+                     const std::string& caller) const
+  {
+    using Point = typename boost::property_traits<VPM>::value_type;
+    using FT = internal::Point_FT<Point>;
+    using Vector = internal::Point_vector<Point>;
+    using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+    using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+    const auto m = mask<Mesh, FT>();
+    std::size_t k = 0;
+    for(vertex_descriptor v : vertices(mesh)) {
+      std::vector<halfedge_descriptor> corners, border_corners;
+      bool border = false;
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+        if(CGAL::is_border(h, mesh)) {
+          border = true;
+          continue;
+        }
+        corners.push_back(h);
+        if(CGAL::is_border(opposite(h, mesh), mesh) || CGAL::is_border(opposite(next(h, mesh), mesh), mesh))
+          border_corners.push_back(h);
+      }
+      const int n = static_cast<int>(corners.size());
+      if(!border) {
+        try {
+          masks(n, false); // the analysis at an n-gon: its limit is its centroid (checked there)
+        } catch(const Bad_input& e) {
+          throw Bad_input(caller + ": vertex " + std::to_string(k) + ": " + e.what());
+        }
+      } else if(border_corners.size() > 2 || border_corners.empty()) {
+        throw Bad_input(caller + ": vertex " + std::to_string(k) + " has " + std::to_string(border_corners.size()) +
+                        " faces with a border edge at it");
+      }
+      std::map<vertex_descriptor, FT> weights;
+      const std::vector<halfedge_descriptor>& used = border ? border_corners : corners;
+      Scaled_weights<vertex_descriptor, FT> acc{&weights, FT(1) / FT(static_cast<int>(used.size()))};
+      for(halfedge_descriptor h : used)
+        m.corner_node(mesh, h, acc);
+      internal::Vertex_limit<Point>& r = results.emplace_back();
+      Vector sum = CGAL::NULL_VECTOR;
+      FT height(0);
+      for(const auto& [u, w] : weights) {
+        if(w == FT(0))
+          continue;
+        sum = sum + (get(vpm, u) - CGAL::ORIGIN) * w;
+        if constexpr(!std::is_same<HeightMap, internal::No_heights>::value)
+          height = height + FT(get(*heights, u)) * w;
+      }
+      r.limit = CGAL::ORIGIN + sum;
+      r.height = height;
+      r.tangents = false;
+      ++k;
+    }
   }
 
   template <class Mesh, class VPM, class HeightMap>
@@ -553,9 +651,17 @@ private:
     internal::Neighbourhood_reader<Mesh> reader(mesh);
     std::map<std::pair<int, bool>, std::vector<FT>> weights; // the limit masks in FT
     std::vector<std::size_t> pending;
+    // sqrt3 hosts: the border masks are those of a resting step followed by a
+    // refining one; on a mesh whose next step refines the border, border
+    // vertices are evaluated one step later
+    const bool border_phase_differs = border_is_pending(mesh);
     for(std::size_t k = 0; k < targets.size(); ++k) {
       const auto v = targets[k];
       const internal::Vertex_configuration<Mesh> c = internal::vertex_configuration(v, mesh);
+      if(c.border && border_phase_differs) {
+        pending.push_back(k);
+        continue;
+      }
       const Limit_masks* found = nullptr;
       try {
         found = &masks(c.valence, c.border);
@@ -606,12 +712,31 @@ private:
                       " more levels");
     // one more level of the scheme on a copy; the descendants of the pending
     // vertices have their limit points and tangent planes
+    // the copy keeps the order of the vertices and of the faces (unlike
+    // copy_face_graph, which reorders the faces): the sqrt3 hosts read the
+    // border phase from that order
     using Copy = CGAL::Surface_mesh<Point>;
     Copy copy;
     std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, typename Copy::Vertex_index>> v2v;
-    CGAL::copy_face_graph(mesh, copy,
-                          CGAL::parameters::vertex_point_map(vpm).vertex_to_vertex_output_iterator(
-                            std::back_inserter(v2v)));
+    {
+      const auto index = CGAL::get_initialized_vertex_index_map(mesh);
+      std::size_t size = 0;
+      for(auto v : vertices(mesh))
+        size = (std::max)(size, static_cast<std::size_t>(get(index, v)) + 1);
+      std::vector<typename Copy::Vertex_index> copied(size);
+      for(auto v : vertices(mesh)) {
+        copied[get(index, v)] = copy.add_vertex(get(vpm, v));
+        v2v.emplace_back(v, copied[get(index, v)]);
+      }
+      std::vector<typename Copy::Vertex_index> corners;
+      for(auto f : faces(mesh)) {
+        corners.clear();
+        for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+          corners.push_back(copied[get(index, v)]);
+        if(copy.add_face(corners) == Copy::null_face())
+          throw Bad_input(caller + ": the mesh cannot be copied for a further level of refinement");
+      }
+    }
     std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, typename Copy::Vertex_index> copy_of(v2v.begin(),
                                                                                                        v2v.end());
     auto copy_heights = copy.template add_property_map<typename Copy::Vertex_index, FT>("v:subdiv_limit_height", FT(0)).first;
@@ -623,6 +748,8 @@ private:
     data.origins(origins);
     if constexpr(!std::is_same<HeightMap, internal::No_heights>::value)
       data.vertex_map(copy_heights);
+    if(border_is_pending(copy) != border_is_pending(mesh))
+      throw Bad_input(caller + ": the copy of the mesh does not keep the border phase of sqrt3");
     subdivide(copy, mask<Copy, FT>(), carried_data(data, CGAL::parameters::number_of_iterations(1)));
     std::vector<typename Copy::Vertex_index> descendant_of_old(v2v.size() + 1);
     std::vector<char> has_descendant(v2v.size() + 1, 0);
@@ -644,6 +771,19 @@ private:
       evaluate_at(copy, copy.points(), heights, next_targets, next_ids, results, depth + 1, caller);
     else
       evaluate_at(copy, copy.points(), &copy_heights, next_targets, next_ids, results, depth + 1, caller);
+  }
+
+  // whether the next step of a sqrt3 host refines the border (false for other hosts)
+  template <class Mesh>
+  static bool border_is_pending(const Mesh& mesh)
+  {
+    if constexpr(Traits::steps == 2) {
+      const typename MaskTemplate<Mesh, double>::Host host(mesh);
+      return host.refines_border();
+    } else {
+      (void)mesh;
+      return false;
+    }
   }
 
   // unit normals in double, by vertex order (see limit_normals())
@@ -748,9 +888,9 @@ Limit_evaluator<MaskTemplate, Args...> make_limit_evaluator(const Args&... args)
  * `MaskTemplate`, e.g. `project_to_limit<Loop_mask>(mesh)`; see
  * `Limit_evaluator::project_to_limit()`. Interpolating schemes leave the
  * points where they are (their limit masks are the unit vector of the centre).
- * \throws Bad_input for a dual scheme, a mesh the scheme does not apply to, a
- * vertex whose configuration the analysis does not cover (border vertices of
- * the sqrt3 schemes).
+ * \throws Bad_input for a mesh the scheme does not apply to, a vertex whose
+ * configuration the analysis does not cover (Doo-Sabin: an interior vertex of
+ * valence 2).
  */
 template <template <class, class> class MaskTemplate, class PolygonMesh,
           class NamedParameters = parameters::Default_named_parameters>
