@@ -604,10 +604,8 @@ std::string c1_summary(const std::vector<Surface_summary>& configs, int skip, co
   return "C1 at " + letter + " = " + ranges(yes) + "; not at " + ranges(no);
 }
 
-void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_row> curves, Output& out,
-                    double seconds_note_unused)
+void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_row> curves, Output& out)
 {
-  (void)seconds_note_unused;
   std::vector<Overview_row> rows;
   for(const Scheme_tables& t : all) {
     const int regular = regular_valence(t);
@@ -715,7 +713,7 @@ int main(int argc, char** argv)
     write_surface_csv(all, out);
     std::vector<Overview_row> curves;
     write_curves(out, curves);
-    write_overview(all, curves, out, 0);
+    write_overview(all, curves, out);
     out.write_all();
     std::cerr << "subdiv-doc-tables: wrote " << out.names().size() << " files to " << dir.string() << "\n";
     return 0;
