@@ -2,6 +2,7 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
+#include <CGAL/Subdiv/stencils/make_limit_stencil_table.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -9,6 +10,8 @@
 
 #include "mesh_test_utils.h"
 
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace S = CGAL::Subdiv;
@@ -138,4 +141,98 @@ TEST(Stencil_table, named_parameters_without_a_refined_mesh)
     EXPECT_EQ(b.source(t), c.source(t));
   }
   EXPECT_EQ(S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 0).number_of_terms(), num_vertices(coarse));
+}
+
+namespace {
+
+using KD = CGAL::Simple_cartesian<double>;
+using Double_mesh = CGAL::Surface_mesh<KD::Point_3>;
+
+// a bumpy quad grid with a border (Catmull-Clark), or its triangulation
+// along alternating diagonals (Loop): valences 2 to 8, corners, a border
+Double_mesh bumpy_grid(bool triangles)
+{
+  Double_mesh mesh;
+  const int n = 7;
+  std::vector<Double_mesh::Vertex_index> v;
+  for(int i = 0; i <= n; ++i)
+    for(int j = 0; j <= n; ++j)
+      v.push_back(mesh.add_vertex(KD::Point_3(i + 0.1 * std::sin(3.0 * j), j, std::cos(0.7 * i) * std::sin(0.9 * j))));
+  const auto at = [&](int i, int j) { return v[static_cast<std::size_t>(i * (n + 1) + j)]; };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if(!triangles)
+        mesh.add_face(a, b, c, d);
+      else if((i + j) % 3 == 0) {
+        mesh.add_face(a, b, c);
+        mesh.add_face(a, c, d);
+      } else {
+        mesh.add_face(a, b, d);
+        mesh.add_face(b, c, d);
+      }
+    }
+  return mesh;
+}
+
+template <template <class, class> class MaskTemplate>
+void expect_limit_tables_equal_subdivide_and_project(const Double_mesh& coarse, int levels)
+{
+  Double_mesh refined;
+  const auto tables = S::make_limit_stencil_tables(coarse, levels, S::make_limit_evaluator<MaskTemplate>(), &refined);
+  Double_mesh reference = coarse;
+  S::subdivide(reference, MaskTemplate<Double_mesh, double>(), CGAL::parameters::number_of_iterations(levels));
+  auto normals = reference.add_property_map<Double_mesh::Vertex_index, KD::Vector_3>("v:n").first;
+  S::limit_normals<MaskTemplate>(reference, normals);
+  S::project_to_limit<MaskTemplate>(reference);
+  const std::vector<KD::Point_3> control(coarse.points().begin(), coarse.points().end());
+  std::vector<KD::Point_3> limit;
+  tables.position.apply(control, limit);
+  ASSERT_EQ(limit.size(), reference.number_of_vertices());
+  std::vector<std::array<double, 3>> control3, tangent[2];
+  for(const auto& p : control)
+    control3.push_back({p.x(), p.y(), p.z()});
+  tables.tangent[0].apply(control3, tangent[0]);
+  tables.tangent[1].apply(control3, tangent[1]);
+  double worst = 0, worst_normal = 0;
+  std::size_t with_tangents = 0;
+  for(auto v : reference.vertices()) {
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(limit[v.idx()], reference.point(v))));
+    if(!tables.has_tangents[v.idx()])
+      continue;
+    ++with_tangents;
+    const KD::Vector_3 t0(tangent[0][v.idx()][0], tangent[0][v.idx()][1], tangent[0][v.idx()][2]);
+    const KD::Vector_3 t1(tangent[1][v.idx()][0], tangent[1][v.idx()][1], tangent[1][v.idx()][2]);
+    KD::Vector_3 normal = CGAL::cross_product(t0, t1);
+    normal = normal / std::sqrt(normal.squared_length());
+    worst_normal = (std::max)(worst_normal, std::sqrt((normal - normals[v]).squared_length()));
+  }
+  EXPECT_LT(worst, 1e-12) << levels << " levels";
+  EXPECT_LT(worst_normal, 1e-9) << levels << " levels";
+  EXPECT_GT(with_tangents, reference.number_of_vertices() / 2);
+}
+
+template <class M, class F>
+using Loop_warren_mask = S::Loop_mask<M, F, S::Warren_beta>;
+
+} // namespace
+
+TEST(Stencil_table, limit_tables_give_subdivide_then_project_to_limit)
+{
+  for(int levels = 0; levels <= 2; ++levels) {
+    expect_limit_tables_equal_subdivide_and_project<S::Loop_mask>(bumpy_grid(true), levels);
+    expect_limit_tables_equal_subdivide_and_project<Loop_warren_mask>(bumpy_grid(true), levels);
+    expect_limit_tables_equal_subdivide_and_project<S::Catmull_clark_mask>(bumpy_grid(false), levels);
+    expect_limit_tables_equal_subdivide_and_project<S::Catmull_clark_mask>(bumpy_grid(true), levels);
+  }
+  // the shorthand: positions only
+  const Double_mesh coarse = bumpy_grid(true);
+  const auto table = S::make_limit_stencil_table<S::Loop_mask>(coarse, 1);
+  EXPECT_EQ(table.number_of_sources(), coarse.number_of_vertices());
+  for(std::size_t i = 0; i < table.number_of_stencils(); ++i) {
+    double sum = 0;
+    for(std::size_t t = table.stencil_begin(i); t < table.stencil_end(i); ++t)
+      sum += table.weight(t);
+    EXPECT_NEAR(sum, 1, 1e-14);
+  }
 }
