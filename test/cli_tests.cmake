@@ -276,8 +276,9 @@ subdiv_cli_test(surface_displace ARGS surface ${tetra} ${mesh_out} --scheme loop
   FILE @WORK@/out.off FILE_REGEX "\n${displaced} ${displaced} ${displaced}\n")
 subdiv_surface_error(surface_limit_doo_sabin 1 "doo-sabin is a dual scheme, its vertices are not points of the limit surface"
   ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 1 --limit)
-subdiv_surface_error(surface_limit_sqrt3_border 1 "vertex 0: border vertices of sqrt3 \\(Kobbelt\\) are not analysed"
-  ARGS surface ${SUBDIV_CLI_DIR}/open_square.off ${mesh_out} --scheme sqrt3 --levels 1 --limit)
+# sqrt3 border vertices are analysed too (over a resting and a refining step)
+subdiv_cli_test(surface_limit_sqrt3_border ARGS surface ${SUBDIV_CLI_DIR}/open_square.off ${mesh_out} --scheme sqrt3 --levels 1 --limit
+  OUTPUT @WORK@/out.off VERTICES 6 FACES 6)
 subdiv_surface_error(surface_displace_count 1 "HEIGHTS '[^']*tetra_heights_short.txt' has 3 heights, INPUT has 4 vertices"
   ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --displace ${SUBDIV_CLI_DIR}/tetra_heights_short.txt)
 subdiv_surface_error(surface_displace_bad_line 1 "HEIGHTS '[^']*tetra_heights_bad.txt' line 3: cannot read 'abc' as a number"
