@@ -42,7 +42,7 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --limit               then move every vertex to its limit position (the
                         limit masks of the scheme's eigen-analysis; all
                         schemes but doo-sabin, whose vertices are not on the
-                        limit surface; sqrt3 schemes on closed meshes only)
+                        limit surface)
   --displace HEIGHTS    displacement: HEIGHTS holds one height per vertex of
                         INPUT, in INPUT's vertex order, one per line (a decimal
                         or a fraction; blank lines and # comments skipped).
