@@ -16,7 +16,7 @@
 set -euo pipefail
 
 readonly REQUIRED_PACKAGES=(cmake g++ make libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
-                            libgtest-dev libboost-dev)
+                            libgtest-dev libboost-dev python3)
 readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev libtbb-dev)
 
 say() { printf '==> %s\n' "$*"; }
