@@ -32,6 +32,28 @@ struct Soup
   std::vector<int> indices; // the corners of face 0, then face 1, ...
 };
 
+/// the soup as a mesh of any library whose `add_vertex(Point)` returns a
+/// vertex handle and whose `add_face` takes a vector of them (Surface_mesh,
+/// OpenMesh); `Point` is made from the three coordinates
+template <class Mesh, class Point, class VertexHandle>
+Mesh mesh_from_soup(const Soup& soup)
+{
+  Mesh mesh;
+  std::vector<VertexHandle> v;
+  v.reserve(soup.points.size());
+  for(const P3& p : soup.points)
+    v.push_back(mesh.add_vertex(Point(p[0], p[1], p[2])));
+  std::vector<VertexHandle> face;
+  std::size_t at = 0;
+  for(const int size : soup.face_sizes) {
+    face.clear();
+    for(int i = 0; i < size; ++i)
+      face.push_back(v[static_cast<std::size_t>(soup.indices[at++])]);
+    mesh.add_face(face);
+  }
+  return mesh;
+}
+
 enum class Scheme { loop, catmull_clark, doo_sabin, sqrt3 };
 std::string scheme_name(Scheme scheme);
 

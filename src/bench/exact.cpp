@@ -19,19 +19,7 @@ template <class K>
 CGAL::Surface_mesh<typename K::Point_3> mesh_of(const Soup& soup)
 {
   using M = CGAL::Surface_mesh<typename K::Point_3>;
-  M mesh;
-  std::vector<typename M::Vertex_index> v;
-  for(const P3& p : soup.points)
-    v.push_back(mesh.add_vertex(typename K::Point_3(p[0], p[1], p[2])));
-  std::size_t at = 0;
-  std::vector<typename M::Vertex_index> face;
-  for(const int size : soup.face_sizes) {
-    face.clear();
-    for(int i = 0; i < size; ++i)
-      face.push_back(v[static_cast<std::size_t>(soup.indices[at++])]);
-    mesh.add_face(face);
-  }
-  return mesh;
+  return mesh_from_soup<M, typename K::Point_3, typename M::Vertex_index>(soup);
 }
 
 template <class K, class Refine>

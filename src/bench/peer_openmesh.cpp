@@ -37,21 +37,7 @@ using Poly_mesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
 template <class OM>
 OM mesh_of(const Soup& soup)
 {
-  OM mesh;
-  mesh.reserve(soup.points.size(), soup.indices.size(), soup.face_sizes.size());
-  std::vector<typename OM::VertexHandle> v;
-  v.reserve(soup.points.size());
-  for(const P3& p : soup.points)
-    v.push_back(mesh.add_vertex(typename OM::Point(p[0], p[1], p[2])));
-  std::vector<typename OM::VertexHandle> face;
-  std::size_t at = 0;
-  for(const int size : soup.face_sizes) {
-    face.clear();
-    for(int i = 0; i < size; ++i)
-      face.push_back(v[static_cast<std::size_t>(soup.indices[at++])]);
-    mesh.add_face(face);
-  }
-  return mesh;
+  return mesh_from_soup<OM, typename OM::Point, typename OM::VertexHandle>(soup);
 }
 
 template <class OM, class Subdivider>
