@@ -78,6 +78,17 @@ using Job_ptr = std::unique_ptr<Job>;
 /// once (interleaved); returns the minimum time of each job, in seconds
 std::vector<double> time_jobs(const std::vector<Job*>& jobs, int runs);
 
+/// How glibc's malloc treats large blocks, for every library alike.
+/// warm: every block comes from the heap and freed memory is kept, so a
+/// repeated run reuses pages already mapped (a program that refines again and
+/// again); fresh: every block of 128 KiB or more is a new mmap and is unmapped
+/// when freed, so each run pays the first touch of its memory (a program that
+/// refines once). glibc's default lies in between and depends on the history:
+/// blocks up to 32 MiB are reused after a first free, larger ones never.
+enum class Heap { warm, fresh };
+void set_heap(Heap heap);
+std::string heap_name(Heap heap);
+
 /// seconds since an arbitrary origin (steady clock)
 double now();
 

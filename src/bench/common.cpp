@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <malloc.h>
 #include <sstream>
 
 namespace subdiv_bench {
@@ -25,6 +26,21 @@ std::string scheme_name(Scheme scheme)
   }
   return "?";
 }
+
+void set_heap(Heap heap)
+{
+  if(heap == Heap::warm) {
+    mallopt(M_MMAP_MAX, 0);                  // no block is mmapped: all come from the heap
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);      // and freed memory stays mapped
+  } else {
+    mallopt(M_MMAP_MAX, 65536);              // glibc's default count
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);   // a fixed threshold: no dynamic raise
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);   // freed heap memory is given back
+    malloc_trim(0);
+  }
+}
+
+std::string heap_name(Heap heap) { return heap == Heap::warm ? "warm" : "fresh"; }
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 

@@ -23,6 +23,10 @@ bool ours_with_tbb();
 /// `loop_subdivision`, ... into the input's Surface_mesh (a copy), with
 /// `threads(threads)` when the library has it; nullptr for threads > 1 if not
 Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threads = 1);
+/// the `Surface_mesh::resize` calls alone that a Loop or Catmull-Clark
+/// refinement in place makes (reserve, then resize to each level's counts)
+/// on a copy of the input: the floor of a refinement into a Surface_mesh
+Job_ptr surface_mesh_resize_floor(const Input& input, Scheme scheme, int levels);
 /// `CGAL::Subdivision_method_3::Loop_subdivision`, ... on a copy
 Job_ptr cgal_refinement(const Input& input, Scheme scheme, int levels);
 /// `make_stencil_table(mesh, mask, levels)` (Loop and Catmull-Clark), threads as above

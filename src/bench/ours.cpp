@@ -126,7 +126,62 @@ private:
   int m_threads = 1;
 };
 
+// The Surface_mesh::resize calls a refinement of the mesh in place must make,
+// alone: reserve the last level (several levels), then resize to every
+// level's counts. Every new element is value-initialised by std::vector, so
+// this is a floor for any refinement into a Surface_mesh through its public
+// API (add_vertex, add_edge, add_face initialise their elements too).
+class Resize_floor_job : public Job
+{
+public:
+  Resize_floor_job(const Mesh& input, Scheme scheme, int levels) : m_input(input), m_scheme(scheme), m_levels(levels) {}
+  void prepare() override
+  {
+    m_mesh = Mesh();
+    m_mesh = m_input;
+  }
+  void run() override
+  {
+    struct Counts
+    {
+      std::size_t vertices, edges, faces, corners;
+    };
+    Counts c{m_mesh.number_of_vertices(), m_mesh.number_of_edges(), m_mesh.number_of_faces(), 0};
+    for(const Mesh::Halfedge_index h : m_mesh.halfedges())
+      c.corners += m_mesh.is_border(h) ? 0 : 1;
+    std::vector<Counts> levels;
+    for(int level = 0; level < m_levels; ++level) {
+      if(m_scheme == Scheme::loop) // 1-to-4 split of triangles
+        c = Counts{c.vertices + c.edges, 2 * c.edges + 3 * c.faces, 4 * c.faces, 12 * c.faces};
+      else // quad split
+        c = Counts{c.vertices + c.edges + c.faces, 2 * c.edges + c.corners, c.corners, 4 * c.corners};
+      levels.push_back(c);
+    }
+    using size_type = Mesh::size_type;
+    if(m_levels >= 2)
+      m_mesh.reserve(static_cast<size_type>(c.vertices), static_cast<size_type>(c.edges),
+                     static_cast<size_type>(c.faces));
+    for(const Counts& level : levels)
+      m_mesh.resize(static_cast<size_type>(level.vertices), static_cast<size_type>(level.edges),
+                    static_cast<size_type>(level.faces));
+  }
+  std::size_t output_faces() const override { return m_mesh.number_of_faces(); }
+
+private:
+  const Mesh& m_input;
+  Scheme m_scheme;
+  int m_levels;
+  Mesh m_mesh;
+};
+
 } // namespace
+
+Job_ptr surface_mesh_resize_floor(const Input& input, Scheme scheme, int levels)
+{
+  if(scheme != Scheme::loop && scheme != Scheme::catmull_clark)
+    return nullptr;
+  return std::make_unique<Resize_floor_job>(input.mesh, scheme, levels);
+}
 
 bool ours_has_threads() { return has_threads; }
 
