@@ -85,7 +85,8 @@ template <class FT>
 struct Surface_analysis
 {
   std::string scheme;   ///< `mask.name()`
-  int valence = 0;      ///< valence n (border: number of faces k; dual: corners of the central face)
+  int valence = 0;      ///< valence n (border: number of faces k; dual: corners of the central face; dual at
+                        ///< the border: faces k of the border vertex the central face was made from)
   bool boundary = false;
   bool face_centred = false; ///< dual scheme: the neighbourhood is centred at an n-gon
   int rings = 0;             ///< rings of the (smallest invariant) neighbourhood
@@ -504,7 +505,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
     return true;
   }
   // the planar control net, then refinement by the real host with the double mask
-  Patch patch = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, big);
+  Patch patch = analysis_patch(mask, result.valence, result.boundary, big);
   const Labelling labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, big);
   require(labels.size() == static_cast<std::size_t>(S.rows()) && labels.size() == patch.mesh.number_of_vertices(),
           "the characteristic-map patch does not match its matrix");
@@ -582,7 +583,8 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
 {
   using Traits = Analysis_host_traits<typename DoubleMask::Host>;
   const int rings = result.rings + 2;
-  Patch patch = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, rings);
+  const Patch shape = analysis_patch(mask, result.valence, result.boundary, rings);
+  Patch patch = shape;
   std::mt19937 random(options.seed + static_cast<unsigned>(result.valence) + (result.boundary ? 1000u : 0u));
   std::uniform_real_distribution<double> coordinate(-1, 1);
   for(Analysis_vertex v : patch.mesh.vertices())
@@ -613,9 +615,9 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
   result.host_error = distance(tracked_point(mesh, start), limit) / diameter;
   result.host_lambda_power = std::pow(std::abs(result.subdominant), level);
   // then the real host on the cropped patch, until the point stops moving
+  const Labelling to = label_neighbourhood(shape.mesh, shape.start, Traits::face_centred, rings);
   for(int more = 0; more < 400; ++more) {
-    Patch fresh = build_patch(Traits::face_size, Traits::face_centred, result.valence, result.boundary, rings);
-    const Labelling to = label_neighbourhood(fresh.mesh, fresh.start, Traits::face_centred, rings);
+    Patch fresh = shape;
     const Labelling from = label_neighbourhood(mesh, start, Traits::face_centred, rings);
     require(to.size() == from.size(), "the cropped neighbourhood does not match");
     for(std::size_t i = 0; i < to.size(); ++i)
@@ -637,7 +639,9 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
  * \ingroup PkgSubdivAnalysis
  * analyses a surface scheme at an interior vertex of valence `valence`, or
  * (`boundary`) at a border vertex with `valence` faces, or, for a dual scheme
- * (`Dual_split`: Doo-Sabin), at an interior face with `valence` corners; all
+ * (`Dual_split`: Doo-Sabin), at an interior face with `valence` corners (or,
+ * `boundary`, at the border face made from a border vertex with `valence`
+ * faces, see below); all
  * other vertices of the neighbourhood are regular (see
  * `local_subdivision_matrix()`). As in [Reif 1995, "A unified approach to
  * subdivision algorithms near extraordinary vertices"] and [Zorin 2000,
@@ -700,10 +704,14 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
  * by a refining step (a freshly built patch rests first, as a mesh read from
  * a file; the neighbourhood is invariant over the pair, which splits the
  * border 1-to-3 like the interior). Doo-Sabin (dual, centred at a face) is
- * analysed at interior faces only: with the border topology of `Dual_split`
- * a border vertex with k >= 3 faces makes border vertices with 3 faces at
- * every level, so the neighbourhood of a border face is not one of regular
- * vertices (see doc/limit.md).
+ * analysed at the border face made from a border vertex with `valence` = k
+ * faces: the face the host makes of the corners at that vertex (k >= 3: its
+ * vertex face, a k-gon with a border edge; k = 2: the edge quad of the
+ * interior edge at it, on the regular border; k = 1: the face face of its
+ * single face, a corner). Its neighbourhood is not one of regular vertices
+ * (the border corners of a border k-gon have 3 faces and a border triangle
+ * beside them, at every level): the patches are made by refinement, as real
+ * meshes have them (`internal::border_face_patch`).
  *
  * \tparam MaskTemplate `MaskTemplate<Mesh, FT>` is a mask (`Loop_mask`,
  *         `Catmull_clark_mask`, `Doo_sabin_mask`, `Butterfly_mask`,

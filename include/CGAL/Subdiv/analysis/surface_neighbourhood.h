@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -138,7 +139,8 @@ struct Patch
 inline Patch build_patch(int face_size, bool face_centred, int n, bool border, int rings)
 {
   require(n >= 1, "the valence must be positive, got " + std::to_string(n));
-  require(!(face_centred && border), "border neighbourhoods of face-centred (dual) schemes are not supported");
+  require(!(face_centred && border),
+          "build_patch: the border neighbourhoods of face-centred (dual) schemes are made by refinement (analysis_patch)");
   require(face_centred || border || n >= 3, "an interior vertex needs valence 3 or more, got " + std::to_string(n));
   require(!face_centred || n >= 3, "a face needs 3 or more corners, got " + std::to_string(n));
   const int sectors = n;
@@ -327,6 +329,26 @@ template <class FT>
 using Vertex_stencil = Stencil<Analysis_vertex, FT>;
 
 /*
+ * The start of a central face with border edges (the border faces of a dual
+ * scheme): the halfedge of the face that is not on the border and follows
+ * one that is, so that the corners are labelled from the first corner after
+ * the border edges, around the face, to the last one before them. Returns
+ * false if the face has no border edge; throws if its border edges are not
+ * one run (then no start is canonical).
+ */
+inline bool border_face_start(const Analysis_mesh& mesh, Analysis_face f, Analysis_halfedge& start)
+{
+  int runs = 0;
+  for(Analysis_halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    if(!mesh.is_border(mesh.opposite(h)) && mesh.is_border(mesh.opposite(mesh.prev(h)))) {
+      start = h;
+      ++runs;
+    }
+  require(runs <= 1, "a central face whose border edges are not consecutive");
+  return runs == 1;
+}
+
+/*
  * One host step of the real host and mask on `mesh`: returns the refined
  * mesh, and the stencil of every new vertex over the old vertices. New
  * positions are computed in double from the stencils (weights converted).
@@ -451,6 +473,8 @@ Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge s
         continue;
       require(!found, "two faces could be the new central face");
       found = true;
+      if(border_face_start(current, f, new_start))
+        continue; // a border face: its start is fixed by its border edges
       double best = -1e300;
       for(Analysis_halfedge h : CGAL::halfedges_around_face(current.halfedge(f), current)) {
         const double w = weight_on(current.source(h), central.front());
@@ -487,6 +511,143 @@ Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge s
   return result;
 }
 
+/*
+ * The faces of `mesh` whose vertices all lie within `rings` rings of the
+ * centre given by `start`, as a new patch: its vertices are those rings, in
+ * label order (vertex i has label i), its faces are added by their smallest
+ * labels, and its start runs from label 0 to label 1 (for a vertex centre:
+ * centre to first neighbour; for a face centre: the start of the central face).
+ */
+inline Patch crop_patch(const Analysis_mesh& mesh, Analysis_halfedge start, bool face_centred, int rings)
+{
+  const Labelling labels = label_neighbourhood(mesh, start, face_centred, rings);
+  Patch result;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    result.mesh.add_vertex(mesh.point(labels.vertex_of[i]));
+  std::vector<std::vector<Analysis_vertex>> faces;
+  for(Analysis_face f : mesh.faces()) {
+    std::vector<Analysis_vertex> cycle;
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const int l = labels.label(v);
+      if(l < 0)
+        break;
+      cycle.push_back(Analysis_vertex(static_cast<Analysis_mesh::size_type>(l)));
+    }
+    if(cycle.size() == mesh.degree(f))
+      faces.push_back(cycle);
+  }
+  const auto smallest = [](const std::vector<Analysis_vertex>& f) {
+    return std::make_pair(*std::min_element(f.begin(), f.end()), *std::max_element(f.begin(), f.end()));
+  };
+  std::stable_sort(faces.begin(), faces.end(), [&](const std::vector<Analysis_vertex>& a,
+                                                   const std::vector<Analysis_vertex>& b) {
+    return smallest(a) < smallest(b);
+  });
+  for(const auto& f : faces)
+    require(CGAL::Euler::add_face(f, result.mesh) != Analysis_mesh::null_face(),
+            "the cropped neighbourhood is not a manifold patch");
+  const auto h = CGAL::halfedge(Analysis_vertex(0), Analysis_vertex(1), result.mesh);
+  require(labels.size() >= 2 && h.second, "the cropped neighbourhood lost its start");
+  result.start = h.first;
+  return result;
+}
+
+// labels and faces of the `rings` rings: the connectivity two levels are compared by
+inline std::pair<std::vector<int>, std::set<std::vector<int>>> connectivity(const Analysis_mesh& mesh,
+                                                                             Analysis_halfedge start,
+                                                                             bool face_centred, int rings)
+{
+  const Labelling labels = label_neighbourhood(mesh, start, face_centred, rings);
+  return {labels.ring, labelled_faces(mesh, labels)};
+}
+
+/*
+ * The patch of `rings` rings around the border face of a dual scheme made
+ * from a border vertex with k faces: the face that the host makes of the
+ * corners at that vertex (k >= 3: its vertex face, a k-gon with a border edge;
+ * k = 2: the edge quad of the interior edge at the vertex, a border quad of
+ * the regular border; k = 1: the face face of its single face, a corner
+ * face), and its descendants (the face faces of the central face, level
+ * after level).
+ *
+ * Its neighbourhood is not one of regular vertices: with the border
+ * topology of `Dual_split` the border corners of a border k-gon (k >= 3)
+ * have 3 faces, and each makes a border triangle at the next level, whose
+ * border corners have 3 faces again. So the patch is made as real meshes
+ * have it: a border vertex with k quads (`build_patch`, 2 rings), refined
+ * by the real host and mask, the central face followed through the levels
+ * (`analysed_step`) and the mesh cropped to `rings` + 3 rings after every
+ * level (enough to keep `rings` + 1 rings exact), until the connectivity of
+ * `rings` + 1 rings around the central face is the same at three consecutive
+ * levels (the self-similar layout: at most 12 levels). Then it is cropped
+ * to `rings` rings (`crop_patch`).
+ */
+template <class Mask>
+Patch border_face_patch(const Mask& mask, int k, int rings)
+{
+  using Traits = Analysis_host_traits<typename Mask::Host>;
+  require(k >= 1, "a border vertex needs one face or more, got " + std::to_string(k));
+  require(rings >= 1, "a patch needs one ring or more");
+  const Patch coarse = build_patch(Traits::face_size, false, k, true, 2);
+  const Analysis_vertex centre = coarse.mesh.source(coarse.start);
+  // level 1: the new vertices are the face corners, numbered face by face
+  // from halfedge(f) (`Dual_split`); the corners at the centre make the central face
+  std::vector<Vertex_stencil<typename Mask::Number_type>> stencils;
+  Analysis_mesh mesh = refine_recording(coarse.mesh, mask, stencils);
+  std::set<Analysis_vertex> corners;
+  std::size_t corner = 0;
+  for(Analysis_face f : coarse.mesh.faces())
+    for(Analysis_halfedge h : CGAL::halfedges_around_face(coarse.mesh.halfedge(f), coarse.mesh)) {
+      if(coarse.mesh.target(h) == centre)
+        corners.insert(Analysis_vertex(static_cast<Analysis_mesh::size_type>(corner)));
+      ++corner;
+    }
+  require(corner == mesh.number_of_vertices() && corners.size() == static_cast<std::size_t>(k),
+          "the host does not number the new vertices by face corners");
+  Analysis_halfedge start;
+  bool found = false;
+  for(Analysis_face f : mesh.faces()) {
+    std::size_t inside = 0;
+    for(Analysis_vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      inside += corners.count(v);
+    if(inside < corners.size())
+      continue;
+    require(!found, "two faces hold the corners at the border vertex");
+    found = border_face_start(mesh, f, start);
+    require(found, "the face of the corners at the border vertex has no border edge");
+  }
+  require(found, "no face holds the corners at the border vertex");
+  // then level after level, cropped, until the layout repeats
+  const int kept = rings + 3;
+  Patch current = crop_patch(mesh, start, true, kept);
+  auto last = connectivity(current.mesh, current.start, true, rings + 1);
+  int same = 0;
+  for(int level = 2; level <= 12 && same < 2; ++level) {
+    const Analysed_step<Mask> step = analysed_step(current.mesh, current.start, mask);
+    current = crop_patch(step.mesh, step.start, true, kept);
+    auto now = connectivity(current.mesh, current.start, true, rings + 1);
+    same = now == last ? same + 1 : 0;
+    last = std::move(now);
+  }
+  require(same >= 2, "the neighbourhood of the border face does not become self-similar in 12 levels");
+  return crop_patch(current.mesh, current.start, true, rings);
+}
+
+/*
+ * The patch of `rings` rings the analysis uses for `mask` at valence n
+ * (`border`: a border vertex with n faces): `build_patch`, except at the
+ * border for face-centred (dual) schemes, whose border neighbourhoods are
+ * made by refinement (`border_face_patch`).
+ */
+template <class Mask>
+Patch analysis_patch(const Mask& mask, int n, bool border, int rings)
+{
+  using Traits = Analysis_host_traits<typename Mask::Host>;
+  if(Traits::face_centred && border)
+    return border_face_patch(mask, n, rings);
+  return build_patch(Traits::face_size, Traits::face_centred, n, border, rings);
+}
+
 } // namespace internal
 
 /*!
@@ -517,7 +678,7 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
 {
   using FT = typename Mask::Number_type;
   using Traits = Analysis_host_traits<typename Mask::Host>;
-  const Patch patch = build_patch(Traits::face_size, Traits::face_centred, valence, border, rings + 2);
+  const Patch patch = analysis_patch(mask, valence, border, rings + 2);
   const Labelling old_labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, rings);
   const Analysed_step<Mask> step = analysed_step(patch.mesh, patch.start, mask);
   const Labelling new_labels = label_neighbourhood(step.mesh, step.start, Traits::face_centred, rings);
@@ -554,7 +715,10 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
  * `valence` (`border`: a border vertex with `valence` faces) or, for a dual
  * scheme (`Dual_split`), at a face with `valence` corners, all other
  * vertices regular (valence 6 for triangles, 4 for quads; border vertices
- * with 3 triangles or 2 quads).
+ * with 3 triangles or 2 quads). A dual scheme at the border (`border`) is
+ * centred at the face the host makes of the corners at a border vertex with
+ * `valence` faces (its vertex face for 3 faces or more, see
+ * `internal::border_face_patch`), whose neighbourhood is made by refinement.
  *
  * The neighbourhood is built as a real `Analysis_mesh`, one analysed step of
  * the scheme's own host and mask is run on it, recording the stencil of
@@ -567,8 +731,9 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
  * invariant (Loop, sqrt3, and the modified butterfly at n != 6: 1 ring,
  * n + 1 vertices; Catmull-Clark: 1 ring, 2n + 1; Doo-Sabin: 1 ring around the
  * face, 4n; butterfly, and the modified butterfly at n = 6: 2 rings, 3n + 1;
- * border vertices with k faces: k + 2, 2k + 2, ... vertices); a given `rings`
- * is used as is and the result says whether it is invariant.
+ * border vertices with k faces: k + 2, 2k + 2, ... vertices; Doo-Sabin
+ * border faces: 1 ring, 4k - 2 vertices for k >= 3, 12 for k = 2, 9 for
+ * k = 1); a given `rings` is used as is and the result says whether it is invariant.
  *
  * \tparam MaskTemplate a mask class template `MaskTemplate<Mesh, FT>`
  *         (`Loop_mask`, `Catmull_clark_mask`, ...; an alias template fixes
