@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <string>
 #include <vector>
 
 namespace S = CGAL::Subdiv;
@@ -150,10 +152,9 @@ using Double_mesh = CGAL::Surface_mesh<KD::Point_3>;
 
 // a bumpy quad grid with a border (Catmull-Clark), or its triangulation
 // along alternating diagonals (Loop): valences 2 to 8, corners, a border
-Double_mesh bumpy_grid(bool triangles)
+Double_mesh bumpy_grid(bool triangles, int n = 7)
 {
   Double_mesh mesh;
-  const int n = 7;
   std::vector<Double_mesh::Vertex_index> v;
   for(int i = 0; i <= n; ++i)
     for(int j = 0; j <= n; ++j)
@@ -234,5 +235,47 @@ TEST(Stencil_table, limit_tables_give_subdivide_then_project_to_limit)
     for(std::size_t t = table.stencil_begin(i); t < table.stencil_end(i); ++t)
       sum += table.weight(t);
     EXPECT_NEAR(sum, 1, 1e-14);
+  }
+}
+
+TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with_any_number_of_threads)
+{
+  // make_stencil_table makes each row once, in one pass (in parallel: in
+  // chunks of rows, copied into place), or in two passes when the host visits
+  // its new vertices out of order (sqrt3 refining a border): the table must be
+  // the level tables composed by Stencil_table::then, to the bit, whatever the
+  // number of threads. Grids large enough for many chunks, with a border.
+  const auto same = [](const S::Stencil_table<double>& a, const S::Stencil_table<double>& b, const std::string& what) {
+    ASSERT_EQ(a.number_of_stencils(), b.number_of_stencils()) << what;
+    ASSERT_EQ(a.number_of_terms(), b.number_of_terms()) << what;
+    ASSERT_EQ(a.number_of_sources(), b.number_of_sources()) << what;
+    for(std::size_t i = 0; i < a.number_of_stencils(); ++i)
+      ASSERT_EQ(a.stencil_end(i), b.stencil_end(i)) << what << ", stencil " << i;
+    for(std::size_t t = 0; t < a.number_of_terms(); ++t) {
+      ASSERT_EQ(a.source(t), b.source(t)) << what << ", term " << t;
+      const double x = a.weight(t), y = b.weight(t);
+      ASSERT_EQ(std::memcmp(&x, &y, sizeof x), 0) << what << ", term " << t << ": " << x << " vs " << y;
+    }
+  };
+  const auto check = [&](const Double_mesh& coarse, const auto& mask, int levels) {
+    Double_mesh work = coarse;
+    auto composed = S::internal::refine_topology_once(work, mask, get(CGAL::vertex_point, work));
+    for(int level = 1; level < levels; ++level)
+      composed = composed.then(S::internal::refine_topology_once(work, mask, get(CGAL::vertex_point, work)));
+    for(const int threads : {1, 2, 0})
+      same(S::make_stencil_table(coarse, mask, levels, S::threads(threads)), composed,
+           mask.name() + ", " + std::to_string(levels) + " levels, threads " + std::to_string(threads));
+    Double_mesh refined;
+    same(S::make_stencil_table(coarse, mask, levels, &refined, S::threads(2)), composed,
+         mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
+  };
+  const Double_mesh triangles = bumpy_grid(true, 40), quads = bumpy_grid(false, 40);
+  for(int levels = 1; levels <= 3; ++levels) {
+    check(triangles, S::Loop_mask<Double_mesh>(), levels);
+    check(quads, S::Catmull_clark_mask<Double_mesh>(), levels);
+    check(triangles, S::Catmull_clark_mask<Double_mesh>(), levels);
+    check(triangles, S::Modified_butterfly_mask<Double_mesh>(), levels);
+    check(triangles, S::Sqrt3_mask<Double_mesh>(), levels);
+    check(quads, S::Doo_sabin_mask<Double_mesh>(), levels);
   }
 }

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -57,28 +59,28 @@ template <class FT>
 struct Compose_scratch
 {
   using Index = std::uint32_t;
-  struct Entry
-  {
-    FT sum;
-    std::uint32_t stamp;
-  };
   std::vector<std::pair<Index, FT>> report;
-  std::vector<Entry> entries;
-  std::vector<Index> order;
+  // the accumulator: sums and stamps apart, so that the stamps (4 bytes per
+  // coarse vertex), read for every term, stay in the first-level cache
+  std::vector<FT> sums;
+  std::vector<std::uint32_t> stamps;
+  std::vector<Index> indices; // a row made outside a table (the two passes)
+  std::vector<FT> weights;
   std::uint32_t generation = 0;
 
   void prepare(std::size_t sources)
   {
-    if(entries.size() != sources) {
-      entries.assign(sources, Entry{FT(0), 0});
+    if(stamps.size() != sources) {
+      sums.assign(sources, FT(0));
+      stamps.assign(sources, 0);
       generation = 0;
     }
   }
   std::uint32_t next_generation()
   {
     if(++generation == 0) { // wrapped: forget every stamp
-      for(Entry& e : entries)
-        e.stamp = 0;
+      for(std::uint32_t& stamp : stamps)
+        stamp = 0;
       generation = 1;
     }
     return generation;
@@ -112,6 +114,114 @@ struct Merging_report
 };
 
 /*
+ * Rows of a table being made: row ends, source indices and weights, appended
+ * row by row. A row opens room for as many terms as it may have (its terms
+ * are written in place, no copy) and is closed with the number it has; the
+ * room of the terms grows by doubling (untouched room costs address space
+ * only).
+ */
+template <class FT>
+struct Row_sink
+{
+  using Index = std::uint32_t;
+  Raw_array<std::size_t>& ends;
+  Raw_array<Index>& indices;
+  Value_array<FT>& weights;
+  std::size_t size = 0; // terms of the closed rows
+  std::size_t room = 0;
+
+  void reserve_terms(std::size_t n)
+  {
+    if(n <= room)
+      return;
+    indices.reserve(n);
+    weights.reserve(n);
+    room = n;
+  }
+  /// room for at most `most` terms of the next row: where its indices and weights go
+  std::pair<Index*, FT*> open(std::size_t most)
+  {
+    if(size + most > room)
+      reserve_terms((std::max)(2 * room, size + most));
+    resize_for_overwrite(indices, size + most);
+    resize_for_overwrite(weights, size + most);
+    return {indices.data() + size, weights.data() + size};
+  }
+  void close(std::size_t count)
+  {
+    size += count;
+    ends.push_back(size);
+  }
+  void finish()
+  {
+    resize_for_overwrite(indices, size);
+    resize_for_overwrite(weights, size);
+  }
+};
+
+/*
+ * The rows of one chunk of new vertices, made by one thread in the parallel
+ * single pass: consecutive new vertices from `first` on, with their own
+ * arrays, copied into the table at the end.
+ */
+template <class FT>
+struct Row_chunk
+{
+  std::size_t first = 0, rows = 0;
+  bool in_order = true;
+  Raw_array<std::size_t> ends;
+  Raw_array<std::uint32_t> indices;
+  Value_array<FT> weights;
+  Row_sink<FT> sink{ends, indices, weights};
+};
+
+/*
+ * The loop given to a host's `for_each_new_vertex` in the parallel single
+ * pass: splits each of its loops into pieces of `piece` elements, run in
+ * parallel by `loop`, and records a `Row_chunk` per piece (in the order of
+ * the loops and pieces, which is the order of the new vertices for the hosts
+ * of the package); while a piece runs, `current.local()` is its chunk.
+ */
+template <class FT>
+class Chunked_loop
+{
+public:
+  Chunked_loop(const Parallel_loop& loop, std::size_t piece, std::size_t room_per_row,
+               std::vector<std::unique_ptr<Row_chunk<FT>>>& chunks, Per_thread<Row_chunk<FT>*>& current)
+    : m_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_current(current)
+  {
+  }
+  bool is_parallel() const { return m_loop.is_parallel(); }
+  int threads() const { return m_loop.threads(); }
+
+  template <class F>
+  void for_range(std::size_t n, std::size_t, const F& f) const
+  {
+    const std::size_t pieces = (n + m_piece - 1) / m_piece, base = m_chunks.size();
+    for(std::size_t p = 0; p < pieces; ++p)
+      m_chunks.push_back(std::make_unique<Row_chunk<FT>>());
+    m_loop.for_range(pieces, 1, [&](std::size_t first, std::size_t last) {
+      for(std::size_t p = first; p < last; ++p) {
+        Row_chunk<FT>* chunk = m_chunks[base + p].get();
+        const std::size_t begin = p * m_piece, end = (std::min)(n, begin + m_piece);
+        chunk->ends.reserve(end - begin);
+        chunk->sink.reserve_terms((end - begin) * m_room_per_row);
+        Row_chunk<FT>*& slot = m_current.local();
+        slot = chunk;
+        f(begin, end);
+        slot = nullptr;
+      }
+    });
+  }
+
+private:
+  const Parallel_loop& m_loop;
+  std::size_t m_piece, m_room_per_row;
+  std::vector<std::unique_ptr<Row_chunk<FT>>>& m_chunks;
+  Per_thread<Row_chunk<FT>*>& m_current;
+};
+
+/*
  * One level composed with the table of the levels before (`coarse`, from the
  * coarse vertices to the old vertices of this level; null for the first
  * level): row j of the result is sum over the mask's terms (v, w) of new
@@ -119,10 +229,12 @@ struct Merging_report
  * first appear (the order and the arithmetic of `Stencil_table::then`, so the
  * table is the same as composing the level tables one by one).
  *
- * In one thread, rows are appended in the order the host visits them, when
- * that is the order of the new vertices (all hosts but a sqrt3 step that
- * refines a border); otherwise, and in parallel, in two passes: the length of
- * every row, then its terms at its place.
+ * Every row is made once, its terms written in place: in one thread, rows
+ * are appended to the table in the order the host visits them; in parallel,
+ * each piece of the host's loops is appended to a chunk of its own, and the
+ * chunks are copied into the table (in parallel) at the end. When a host does
+ * not visit its new vertices in order (a sqrt3 step that refines a border),
+ * rows are made in two passes: lengths, then terms at their place.
  */
 template <class FT, class Host, class Mask, class Numbering>
 Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Numbering& number,
@@ -139,82 +251,146 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
   const Index* coarse_indices = coarse ? Access::indices(const_cast<Stencil_table<FT>&>(*coarse)).data() : nullptr;
   const FT* coarse_weights = coarse ? Access::weights(const_cast<Stencil_table<FT>&>(*coarse)).data() : nullptr;
 
-  // calls emit(source, weight) for every term of new vertex j's row
-  const auto compose = [&](Compose_scratch<FT>& scratch, const auto& report, const auto& emit) {
+  // makes new vertex j's row at open(most), room for at most `most` terms
+  // (a pair of pointers: indices, weights); returns its number of terms
+  const auto compose = [&](Compose_scratch<FT>& scratch, const auto& report, const auto& open) -> std::size_t {
     Merging_report<Numbering, FT> acc{number, scratch.report};
     report(acc);
     const std::pair<Index, FT>* terms = scratch.report.data();
     if(coarse == nullptr) {
-      for(std::size_t k = 0; k < acc.size; ++k)
-        emit(terms[k].first, terms[k].second);
-      return;
+      const auto out = open(acc.size);
+      for(std::size_t k = 0; k < acc.size; ++k) {
+        out.first[k] = terms[k].first;
+        out.second[k] = terms[k].second;
+      }
+      return acc.size;
     }
-    scratch.prepare(sources);
-    const std::uint32_t generation = scratch.next_generation();
+    if(acc.size == 0)
+      return 0;
     std::size_t most = 0;
     for(std::size_t k = 0; k < acc.size; ++k)
       most += coarse_ends[terms[k].first] - (terms[k].first == 0 ? 0 : coarse_ends[terms[k].first - 1]);
-    if(scratch.order.size() < most)
-      scratch.order.resize(2 * most);
-    Index* order = scratch.order.data();
-    typename Compose_scratch<FT>::Entry* entries = scratch.entries.data();
+    const auto out = open(most);
+    Index* out_indices = out.first;
+    scratch.prepare(sources);
+    const std::uint32_t generation = scratch.next_generation();
+    FT* sums = scratch.sums.data();
+    std::uint32_t* stamps = scratch.stamps.data();
+    const Index* from = coarse_indices;
+    const FT* from_weights = coarse_weights;
     std::size_t count = 0;
     for(std::size_t k = 0; k < acc.size; ++k) {
       const Index v = terms[k].first;
-      const FT& w = terms[k].second;
+      const FT w = terms[k].second;
       const std::size_t begin = v == 0 ? 0 : coarse_ends[v - 1], end = coarse_ends[v];
       for(std::size_t t = begin; t < end; ++t) {
-        const Index s = coarse_indices[t];
-        auto& entry = entries[s];
-        if(entry.stamp != generation) {
-          entry.stamp = generation;
-          order[count++] = s;
-          entry.sum = w * coarse_weights[t];
+        const Index s = from[t];
+        if(stamps[s] != generation) {
+          stamps[s] = generation;
+          out_indices[count++] = s;
+          sums[s] = w * from_weights[t];
         } else {
-          entry.sum += w * coarse_weights[t];
+          sums[s] += w * from_weights[t];
         }
       }
     }
-    for(std::size_t k = 0; k < count; ++k)
-      emit(order[k], entries[order[k]].sum);
+    FT* out_weights = out.second;
+    for(std::size_t c = 0; c < count; ++c)
+      out_weights[c] = sums[out_indices[c]];
+    return count;
   };
+
+  // room for the terms: twice the mean row of the levels before, which grows
+  // less than that from level to level
+  const std::size_t mean =
+    coarse ? coarse->number_of_terms() / (std::max<std::size_t>)(1, coarse->number_of_stencils()) : 0;
+  const std::size_t room_per_row = (std::max<std::size_t>)(16, 2 * mean + 4);
 
   if(!loop.is_parallel()) {
     Compose_scratch<FT> scratch;
-    // room for the terms: twice the mean row of the levels before, which
-    // grows less than that from level to level (untouched room costs only
-    // address space)
-    const std::size_t mean = coarse ? coarse->number_of_terms() / std::max<std::size_t>(1, coarse->number_of_stencils()) : 0;
-    const std::size_t room = rows * (std::max<std::size_t>)(16, 2 * mean + 4);
+    Row_sink<FT> sink{ends, indices, weights};
+    sink.reserve_terms(rows * room_per_row);
     ends.reserve(rows);
-    indices.reserve(room);
-    weights.reserve(room);
     bool in_order = true;
     host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
       if(!in_order || j != ends.size()) {
         in_order = false;
         return;
       }
-      compose(scratch, report, [&](Index s, const FT& w) {
-        indices.push_back(s);
-        weights.push_back(w);
-      });
-      ends.push_back(indices.size());
+      sink.close(compose(scratch, report, [&](std::size_t most) { return sink.open(most); }));
     });
-    if(in_order && ends.size() == rows)
+    if(in_order && ends.size() == rows) {
+      sink.finish();
       return table;
+    }
     ends.clear();
     indices.clear();
     weights.clear();
+  } else {
+    // one pass: each piece of the host's loops into a chunk of its own
+    std::vector<std::unique_ptr<Row_chunk<FT>>> chunks;
+    Per_thread<Row_chunk<FT>*> current;
+    Per_thread<Compose_scratch<FT>> scratches;
+    const std::size_t piece = 4096;
+    const Chunked_loop<FT> chunked(loop, piece, room_per_row, chunks, current);
+    host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+      Row_chunk<FT>* chunk = current.local();
+      if(chunk == nullptr || !chunk->in_order)
+        return;
+      if(chunk->rows == 0)
+        chunk->first = j;
+      else if(j != chunk->first + chunk->rows) {
+        chunk->in_order = false;
+        return;
+      }
+      Row_sink<FT>& sink = chunk->sink;
+      sink.close(compose(scratches.local(), report, [&](std::size_t most) { return sink.open(most); }));
+      ++chunk->rows;
+    }, chunked);
+    // the chunks must hold every row once, in order
+    std::vector<std::size_t> offsets(chunks.size() + 1, 0);
+    bool whole = true;
+    std::size_t next = 0;
+    for(std::size_t c = 0; c < chunks.size() && whole; ++c) {
+      const Row_chunk<FT>& chunk = *chunks[c];
+      whole = chunk.in_order && (chunk.rows == 0 || chunk.first == next);
+      next += chunk.rows;
+      offsets[c + 1] = offsets[c] + chunk.sink.size;
+    }
+    if(whole && next == rows) {
+      resize_for_overwrite(ends, rows);
+      resize_for_overwrite(indices, offsets.back());
+      resize_for_overwrite(weights, offsets.back());
+      loop.for_range(chunks.size(), 1, [&](std::size_t first, std::size_t last) {
+        for(std::size_t c = first; c < last; ++c) {
+          Row_chunk<FT>& chunk = *chunks[c];
+          const std::size_t offset = offsets[c];
+          std::copy(chunk.indices.data(), chunk.indices.data() + chunk.sink.size, indices.data() + offset);
+          std::copy(chunk.weights.data(), chunk.weights.data() + chunk.sink.size, weights.data() + offset);
+          for(std::size_t r = 0; r < chunk.rows; ++r)
+            ends[chunk.first + r] = offset + chunk.ends[r];
+          chunks[c].reset();
+        }
+      });
+      return table;
+    }
   }
 
   // two passes: lengths, then terms
   resize_for_overwrite(ends, rows);
   Per_thread<Compose_scratch<FT>> scratches;
+  const auto in_scratch = [](Compose_scratch<FT>& scratch) {
+    return [&scratch](std::size_t most) {
+      if(scratch.indices.size() < most) {
+        scratch.indices.resize(2 * most);
+        scratch.weights.resize(2 * most);
+      }
+      return std::make_pair(scratch.indices.data(), scratch.weights.data());
+    };
+  };
   host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-    std::size_t length = 0;
-    compose(scratches.local(), report, [&](Index, const FT&) { ++length; });
-    ends[j] = length;
+    Compose_scratch<FT>& scratch = scratches.local();
+    ends[j] = compose(scratch, report, in_scratch(scratch));
   }, loop);
   std::size_t total = 0;
   for(std::size_t j = 0; j < rows; ++j) {
@@ -226,12 +402,11 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
   Index* out_indices = indices.data();
   FT* out_weights = weights.data();
   host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-    std::size_t t = j == 0 ? 0 : ends[j - 1];
-    compose(scratches.local(), report, [&](Index s, const FT& w) {
-      out_indices[t] = s;
-      out_weights[t] = w;
-      ++t;
-    });
+    Compose_scratch<FT>& scratch = scratches.local();
+    const std::size_t t = j == 0 ? 0 : ends[j - 1];
+    const std::size_t count = compose(scratch, report, in_scratch(scratch));
+    std::copy(scratch.indices.data(), scratch.indices.data() + count, out_indices + t);
+    std::copy(scratch.weights.data(), scratch.weights.data() + count, out_weights + t);
   }, loop);
   return table;
 }
@@ -323,11 +498,17 @@ make_stencil_table(const PolygonMesh& mesh, const Mask& mask, int levels,
   if(levels == 0 && refined_mesh == nullptr)
     return Stencil_table<FT>::identity(sources);
 
+  const int topology_levels = refined_mesh != nullptr ? levels : levels - 1;
+  if(topology_levels == 0 && levels == 1) { // the input's topology is all it needs: no copy
+    const Host host(mesh);
+    const internal::Mesh_numbering<PolygonMesh> number(mesh);
+    return internal::compose_level<FT>(host, mask, number, static_cast<const Stencil_table<FT>*>(nullptr), sources,
+                                       loop);
+  }
   PolygonMesh work = mesh;
   const auto work_vpm = get(CGAL::vertex_point, work);
-  const int topology_levels = refined_mesh != nullptr ? levels : levels - 1;
   internal::reserve_levels<Host>(work, topology_levels);
-  Stencil_table<FT> table = Stencil_table<FT>::identity(sources);
+  Stencil_table<FT> table = levels == 0 ? Stencil_table<FT>::identity(sources) : Stencil_table<FT>(sources);
   for(int level = 0; level < levels; ++level) {
     const Host host(work);
     const internal::Mesh_numbering<PolygonMesh> number(work);
