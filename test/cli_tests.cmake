@@ -321,6 +321,7 @@ subdiv_analyse_json(butterfly_3 butterfly3 analyse --scheme butterfly --valence 
 subdiv_analyse_json(loop_border_2 loop_border2 analyse --scheme loop --valence 2 --boundary --json)
 subdiv_analyse_json(catmull_clark_border_5 catmull_clark_border5 analyse --scheme catmull-clark --valence 5 --boundary --json)
 subdiv_analyse_json(doo_sabin_5 doo_sabin5 analyse --scheme doo-sabin --valence 5 --json)
+subdiv_analyse_json(doo_sabin_border_4 doo_sabin_border4 analyse --scheme doo-sabin --valence 4 --boundary --json)
 subdiv_analyse_json(bspline_3 bspline3 analyse --scheme bspline --degree 3 --json)
 subdiv_analyse_json(four_point_w_1_5 four_point_tense analyse --scheme four-point --w 1/5 --json)
 subdiv_analyse_json(bezier_3 bezier analyse --scheme bezier --json)
@@ -333,8 +334,11 @@ subdiv_cli_error(analyse_border_zero 1 "the number of faces at a border vertex m
   ARGS analyse --scheme loop --valence 0 --boundary)
 subdiv_cli_test(analyse_sqrt3_border ARGS analyse --scheme sqrt3 --valence 4 --boundary
   STDOUT_REGEX "^sqrt3 \\(Kobbelt\\) \\(sqrt3\\) at a border vertex with 4 faces\n.*limit mask, centre")
-subdiv_cli_error(analyse_doo_sabin_border 1 "border vertices of doo-sabin are not analysed"
-  ARGS analyse --scheme doo-sabin --valence 4 --boundary --json)
+# doo-sabin at the border face made from a border vertex with N faces
+subdiv_cli_test(analyse_doo_sabin_border ARGS analyse --scheme doo-sabin --valence 5 --boundary
+  STDOUT_REGEX "^Doo-Sabin \\(doo-sabin\\) at the border face made from a border vertex with 5 faces\n.*C1 +yes")
+subdiv_cli_error(analyse_doo_sabin_border_zero 1 "the number of faces at a border vertex must be between 1 and 32, got 0"
+  ARGS analyse --scheme doo-sabin --valence 0 --boundary)
 subdiv_cli_error(analyse_linear 1 "linear has no smoothness to analyse" ARGS analyse --scheme linear --valence 6)
 subdiv_cli_error(analyse_bspline_degree 1 "degree must be between 1 and 64, got 0" ARGS analyse --scheme bspline --degree 0)
 subdiv_cli_error(analyse_unknown_scheme 2 "unknown scheme 'loopy' \\(expected loop, " ARGS analyse --scheme loopy --valence 6)

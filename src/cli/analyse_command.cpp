@@ -36,9 +36,11 @@ the smoothness verdict and the limit mask.
                     with --boundary the number of faces around the border
                     vertex, 1 <= N <= 32 (the exact analysis costs
                     about the cube of the neighbourhood size: seconds at 32)
-  --boundary        analyse a border vertex (every surface scheme but
-                    doo-sabin, which is analysed at interior faces only; the
-                    sqrt3 schemes over a resting and a refining step)
+  --boundary        analyse a border vertex (the sqrt3 schemes over a resting
+                    and a refining step; doo-sabin at the border face made
+                    from a border vertex with N faces: its vertex face, a
+                    border N-gon, for N >= 3, a border quad for N = 2, a
+                    corner face for N = 1)
   --degree K        bspline and bezier (default 3)
   --a A, --b B      corner-cutting, 0 < A < B < 1 (default 1/4, 3/4)
   --w W             four-point tension, 0 <= W < 1/4 (default 1/16)
@@ -155,7 +157,9 @@ std::string weight_text(const Surface_summary& s, std::size_t label)
 
 void print_surface_table(const Surface_summary& s, std::ostream& out)
 {
-  const std::string where = s.boundary ? "a border vertex with " + std::to_string(s.valence) + " faces"
+  const std::string where = s.boundary && s.face_centred
+                              ? "the border face made from a border vertex with " + std::to_string(s.valence) + " faces"
+                            : s.boundary ? "a border vertex with " + std::to_string(s.valence) + " faces"
                             : s.face_centred ? "an interior face with " + std::to_string(s.valence) + " corners"
                                              : "an interior vertex of valence " + std::to_string(s.valence);
   out << s.name << " (" << s.scheme << ") at " << where << "\n";

@@ -73,7 +73,8 @@ constexpr int max_analysed_valence = 32;
 /*
  * analyses the surface scheme `keyword` at an interior vertex of valence
  * `valence` (Doo-Sabin: a face with `valence` corners) or, with `boundary`,
- * at a border vertex with `valence` faces, in Exact_rational.
+ * at a border vertex with `valence` faces (Doo-Sabin: the border face made
+ * from it), in Exact_rational.
  * \throws Usage_error for an unknown keyword, Input_error for linear, a
  *         valence out of range or a border vertex of a scheme whose border is
  *         not analysed

@@ -73,7 +73,7 @@ const std::vector<Surface_scheme_facts>& analysable_surface_schemes()
     {"loop", "1-to-4 triangle split", false, false, true},
     {"loop-warren", "1-to-4 triangle split", false, false, true},
     {"catmull-clark", "quad split", false, false, true},
-    {"doo-sabin", "dual quad split", true, false, false},
+    {"doo-sabin", "dual quad split", true, false, true},
     {"sqrt3", "sqrt3 split", false, false, true},
     {"butterfly", "1-to-4 triangle split", false, true, true},
     {"modified-butterfly", "1-to-4 triangle split", false, true, true},
@@ -100,8 +100,7 @@ Surface_summary analyse_surface(const std::string& keyword, int valence, bool bo
   if(!facts)
     throw Usage_error("unknown scheme '" + keyword + "'");
   if(boundary && !facts->border_analysis)
-    throw Input_error("border vertices of " + keyword + " are not analysed (" +
-                      (facts->dual ? "a dual scheme is analysed at interior faces only)" : "not supported)"));
+    throw Input_error("border vertices of " + keyword + " are not analysed");
   const int low = boundary ? 1 : 3;
   if(valence < low || valence > max_analysed_valence) {
     const std::string what = boundary ? "the number of faces at a border vertex"

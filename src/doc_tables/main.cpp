@@ -290,7 +290,8 @@ void write_scheme(const Scheme_tables& t, Output& out)
      << "Each rule is the list of weights a mask reports for one new vertex, read through a `Stencil` "
      << "accumulator on a patch built as a real mesh. Old vertices are given by their label in the "
      << "canonical order of the analysis: "
-     << (t.facts->dual ? "labels 0..n-1 are the corners of the central face, then ring by ring"
+     << (t.facts->dual ? "labels 0..n-1 are the corners of the central face (at the border: from the first one "
+                         "after its border edges), then ring by ring"
                        : "label 0 is the centre, then ring by ring, counter-clockwise, label 1 first")
      << " (`[label] weight`; `w (all k)`: the same weight for the k vertices of the ring; "
      << "`(a, b) x k`: a and b alternating).\n\n";
@@ -336,10 +337,13 @@ void write_scheme(const Scheme_tables& t, Output& out)
   analysis_tables(t.interior, t.facts->dual ? "Eigen-analysis at faces with n corners"
                                             : "Eigen-analysis at interior vertices",
                   where(t));
-  analysis_tables(t.border, "Eigen-analysis at border vertices with k faces", "k");
+  analysis_tables(t.border, t.facts->dual ? "Eigen-analysis at border faces made from border vertices with k faces "
+                                           "(k >= 3: the vertex face, a border k-gon; k = 2: a border quad of the "
+                                           "regular border; k = 1: the corner face)"
+                                         : "Eigen-analysis at border vertices with k faces",
+                  "k");
   if(t.border.empty())
-    md << "Border vertices: not analysed ("
-       << (t.facts->dual ? "a dual scheme is analysed at interior faces only" : "not supported") << ").\n";
+    md << "Border vertices: not analysed.\n";
 }
 
 void write_surface_csv(const std::vector<Scheme_tables>& all, Output& out)
@@ -646,7 +650,7 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "(`Exact_rational`; eigenvalues by Eigen in double). Surface verdicts are the C1 test "
      << "(eigenvalues, extended spectrum, characteristic map) at interior vertices of valence "
      << first_valence << ".." << last_valence << " (Doo-Sabin: faces with that many corners) and at border "
-     << "vertices with 1.." << last_border << " faces; the test decides C1, not higher smoothness (the "
+     << "vertices with 1.." << last_border << " faces (Doo-Sabin: the border faces made from them); the test decides C1, not higher smoothness (the "
      << "B-spline based schemes are C2 at regular points, which this analysis does not test). Curve "
      << "smoothness is proven by the difference-scheme method (a lower bound).\n\n"
      << "## Overview\n\n|";

@@ -58,7 +58,7 @@ std::vector<Rule> rules_of(int n, bool boundary)
   using Mask = MaskTemplate<Mesh, Exact>;
   using Traits = S::Analysis_host_traits<typename Mask::Host>;
   const Mask mask;
-  const SI::Patch patch = SI::build_patch(Traits::face_size, Traits::face_centred, n, boundary, patch_rings + 2);
+  const SI::Patch patch = SI::analysis_patch(mask, n, boundary, patch_rings + 2);
   const SI::Labelling labels = SI::label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, patch_rings);
   const Mesh& mesh = patch.mesh;
   const auto h = patch.start;
@@ -69,8 +69,20 @@ std::vector<Rule> rules_of(int n, bool boundary)
     rules.push_back(make_rule(name, description, stencil, labels));
   };
   if constexpr(Traits::face_centred) { // dual: the new vertex of corner 0 of the central n-gon
-    record("corner", "The new vertex of corner 0 of the central face (labels 0..n-1: its corners)",
-           [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
+    if(!boundary) {
+      record("corner", "The new vertex of corner 0 of the central face (labels 0..n-1: its corners)",
+             [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
+    } else { // the border face made from a border vertex with n faces
+      record("border corner",
+             "The new vertex of corner 0 of the central border face (labels 0..m-1: its corners, from the first "
+             "one after its border edges): on the border",
+             [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
+      record("interior corner", "The new vertex of corner 1 of the central border face",
+             [&](auto& acc) { mask.corner_node(mesh, h, acc); });
+      if(n == 1)
+        record("corner with a single face", "The new vertex of corner 3 of the corner face, the corner of the mesh",
+               [&](auto& acc) { mask.corner_node(mesh, mesh.prev(mesh.prev(h)), acc); });
+    }
   } else if constexpr(Traits::steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
     if(boundary) {
       record("border vertex (refining step)", "The new position of the centre (label 0) on a step that refines the border",

@@ -38,7 +38,8 @@ struct Rule
 /*
  * the rules of the surface scheme `keyword` (as in `cgal-subdiv surface`)
  * around an interior vertex of valence n (Doo-Sabin: a face with n corners)
- * or, with `boundary`, a border vertex with n faces.
+ * or, with `boundary`, a border vertex with n faces (Doo-Sabin: the border
+ * face made from it, see `analyse_surface_scheme()`).
  */
 std::vector<Rule> read_rules(const std::string& keyword, int n, bool boundary);
 

@@ -100,6 +100,19 @@ def doo_sabin5(d):
     assert near(d["limit_mask"]["center"], 0.2, 1e-15)  # the centroid of the central face
 
 
+def doo_sabin_border4(d):
+    check_surface_shape(d)
+    assert d["scheme"] == "doo-sabin" and d["valence"] == 4 and d["boundary"] is True
+    assert d["c1"] is True and d["c1_necessary"] is True and d["exact"] is True
+    assert d["characteristic_map"] == "regular_injective"
+    # the interior corners of the border 4-gon give 3/4, the Chaikin border 1/2
+    assert d["subdominant"] == [0.75, 0] and d["subdominant_multiplicity"] == 1
+    assert d["eigenvalues"][2] == [0.5, 0], d["eigenvalues"]
+    # the midpoint of the two border corners (labels 0 and 3) of the 4-gon, 14 vertices
+    w = d["limit_mask"]["weights"]
+    assert d["limit_mask"]["center"] == 0.5 and len(w) == 13 and w[2] == 0.5 and sum(w) == 0.5, w
+
+
 def bspline3(d):
     assert list(d.keys()) == CURVE_FIELDS, list(d.keys())
     assert d["scheme"] == "bspline" and d["parameters"] == {"degree": 3} and d["window"] == [-1, 1]
