@@ -507,6 +507,25 @@ TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
   }
 }
 
+// The evaluator's Doo-Sabin border limit points are the limit masks of the
+// analysis at the border faces (k >= 2: 1/2 on the two border corners of the
+// face made of the corners at the vertex, labels 0 and m - 1; k = 1: the kept
+// corner, label 3 of the corner face), checked exactly when computed
+TEST(ProjectToLimit, doo_sabin_border_masks_are_the_border_face_analysis)
+{
+  const SD::Limit_evaluator<SD::Doo_sabin_mask> evaluator;
+  for(int k = 1; k <= 8; ++k) {
+    SCOPED_TRACE("k = " + std::to_string(k));
+    const SD::Limit_masks& masks = evaluator.masks(k, true);
+    EXPECT_TRUE(masks.c1);
+    EXPECT_FALSE(masks.tangents);
+    const std::size_t last = static_cast<std::size_t>(k >= 3 ? k - 1 : 3);
+    ASSERT_EQ(masks.limit.size(), k == 1 ? 9u : k == 2 ? 12u : static_cast<std::size_t>(4 * k - 2));
+    for(std::size_t i = 0; i < masks.limit.size(); ++i)
+      EXPECT_EQ(masks.limit[i], k == 1 ? Q(i == 3 ? 1 : 0) : Q(i == 0 || i == last ? 1 : 0) / Q(2));
+  }
+}
+
 // ------------------------------------------------------------------ normals
 
 // planar meshes: every normal is exactly +z (faces counter-clockwise seen from

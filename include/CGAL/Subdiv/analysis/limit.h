@@ -267,12 +267,26 @@ Limit_masks compute_limit_masks(int valence, bool border, const Args&... args)
     // a dual scheme: the analysis is centred at an n-gon (labels 0..n-1 its
     // corners); the evaluator uses the limit mask only if it is the centroid
     // of the central face (then the face alone is invariant and its limit
-    // point does not depend on the faces around it)
-    for(std::size_t i = 0; i < masks.limit.size(); ++i)
-      require(masks.limit[i] == (i < static_cast<std::size_t>(valence)
-                                   ? CGAL::Exact_rational(CGAL::Exact_rational(1) / CGAL::Exact_rational(valence))
-                                   : CGAL::Exact_rational(0)),
-              where + ": the limit mask of the face is not its centroid");
+    // point does not depend on the faces around it). At the border (the face
+    // made of the corners at a border vertex with k faces, labelled from the
+    // first corner after its border edges): only if it is the midpoint of its
+    // first and last corners, the two corners at the vertex on the new border
+    // (k >= 3: the k-gon's border corners; k = 2: those of the border quad),
+    // or, k = 1, its corner 3, the kept corner of the corner face.
+    const std::size_t corners = static_cast<std::size_t>(border && valence < 3 ? 4 : valence);
+    for(std::size_t i = 0; i < masks.limit.size(); ++i) {
+      const CGAL::Exact_rational one(1);
+      CGAL::Exact_rational expected(0);
+      if(!border && i < corners)
+        expected = one / CGAL::Exact_rational(valence);
+      else if(border && valence == 1 && i == 3)
+        expected = one;
+      else if(border && valence >= 2 && (i == 0 || i == corners - 1))
+        expected = one / CGAL::Exact_rational(2);
+      require(masks.limit[i] == expected, where + (border ? ": the limit mask of the border face is not the midpoint "
+                                                            "of its border corners"
+                                                          : ": the limit mask of the face is not its centroid"));
+    }
     masks.tangents = false;
     return masks;
   }
@@ -375,7 +389,8 @@ inline double norm(const std::array<double, 3>& a)
  * centroid of the corners at an interior vertex (the limit mask of the
  * analysis centred at that n-gon), the midpoint of the two border corners at
  * a border vertex (the Chaikin border), the vertex itself at a corner with a
- * single face; normals are face normals (see doc/limit.md).
+ * single face (both the limit masks of the analysis at the border face made
+ * from the vertex); normals are face normals (see doc/limit.md).
  *
  * sqrt3 hosts: the border analysis is that of a resting step followed by a
  * refining one; on a mesh whose next step refines the border, border
@@ -579,7 +594,10 @@ private:
    * alone and converge to its midpoint: the limit is the midpoint of the two
    * border corners, 3/4 v + 1/8 (u + w) for the border neighbours u, w (the
    * quadratic B-spline of the border polygon at v); a corner with a single
-   * face is kept (the limit is v). Tangent masks: none (face normals).
+   * face is kept (the limit is v). That is the limit mask of the analysis at
+   * the border face made from v, checked to be exactly that. Tangent masks:
+   * none (face normals; the analysis' tangent masks are over the corners of
+   * the next level, which this evaluation does not read).
    */
   template <class Mesh, class VPM, class HeightMap>
   void evaluate_dual(const Mesh& mesh, const VPM& vpm, const HeightMap* heights,
@@ -606,15 +624,16 @@ private:
           border_corners.push_back(h);
       }
       const int n = static_cast<int>(corners.size());
-      if(!border) {
-        try {
-          masks(n, false); // the analysis at an n-gon: its limit is its centroid (checked there)
-        } catch(const Bad_input& e) {
-          throw Bad_input(caller + ": vertex " + std::to_string(k) + ": " + e.what());
-        }
-      } else if(border_corners.size() > 2 || border_corners.empty()) {
+      if(border && (border_corners.size() > 2 || border_corners.empty()))
         throw Bad_input(caller + ": vertex " + std::to_string(k) + " has " + std::to_string(border_corners.size()) +
                         " faces with a border edge at it");
+      try {
+        // the analysis at an n-gon: its limit is its centroid; at the border
+        // face made from a border vertex with n faces: the midpoint of its
+        // two corners on the border, or the kept corner (checked there)
+        masks(n, border);
+      } catch(const Bad_input& e) {
+        throw Bad_input(caller + ": vertex " + std::to_string(k) + ": " + e.what());
       }
       std::map<vertex_descriptor, FT> weights;
       const std::vector<halfedge_descriptor>& used = border ? border_corners : corners;
