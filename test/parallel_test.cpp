@@ -111,6 +111,24 @@ std::vector<std::uint64_t> fingerprint(const Mesh& mesh)
   return out;
 }
 
+// the connectivity only (targets, next, prev, faces of halfedges, halfedges
+// of vertices and faces)
+std::vector<std::uint64_t> connectivity(const Mesh& mesh)
+{
+  std::vector<std::uint64_t> out;
+  for(const V v : mesh.vertices())
+    out.push_back(mesh.halfedge(v));
+  for(const auto h : mesh.halfedges()) {
+    out.push_back(mesh.target(h));
+    out.push_back(mesh.next(h));
+    out.push_back(mesh.prev(h));
+    out.push_back(mesh.face(h));
+  }
+  for(const auto f : mesh.faces())
+    out.push_back(mesh.halfedge(f));
+  return out;
+}
+
 template <class F>
 void expect_same_with_any_thread_count(const Mesh& input, const F& refine, int levels)
 {
@@ -152,6 +170,77 @@ TEST(Parallel, other_schemes_are_the_same_with_any_number_of_threads)
   expect_same_with_any_thread_count(triangles, [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, 3);
   expect_same_with_any_thread_count(triangles, [](Mesh& m, const auto& np) { S::modified_butterfly_subdivision(m, np); }, 2);
   expect_same_with_any_thread_count(quads, [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, 2);
+}
+
+TEST(Parallel, edge_splits_beside_the_resize_are_the_same_with_any_number_of_threads)
+{
+#if defined(NDEBUG) && !defined(_GLIBCXX_ASSERTIONS)
+  // with threads, the resize runs beside the snapshot and the masks here
+  EXPECT_TRUE(S::internal::resize_beside_reads);
+#endif
+  const auto butterfly = [](Mesh& m, const auto& np) { S::butterfly_subdivision(m, np); };
+  const auto linear = [](Mesh& m, const auto& np) { S::linear_triangle_subdivision(m, np); };
+  const auto linear_quad = [](Mesh& m, const auto& np) { S::linear_quad_subdivision(m, np); };
+  for(const int hole : {0, 5}) {
+    const Mesh triangles = torus(24, 20, true, hole), quads = torus(24, 20, false, hole);
+    for(int levels = 1; levels <= 3; ++levels) {
+      expect_same_with_any_thread_count(triangles, butterfly, levels);
+      expect_same_with_any_thread_count(triangles, linear, levels);
+      expect_same_with_any_thread_count(quads, catmull_clark, levels);
+      expect_same_with_any_thread_count(quads, linear_quad, levels);
+    }
+  }
+  // one level, with room reserved beforehand (the arrays do not move) and
+  // with none (a copy: the room is made first, then the resize runs beside)
+  for(const bool triangles : {true, false}) {
+    const Mesh input = torus(30, 20, triangles, 7);
+    Mesh sequential = input;
+    const auto np = CGAL::parameters::number_of_iterations(1);
+    const auto refine = [&](Mesh& m, const auto& p) {
+      if(triangles)
+        S::loop_subdivision(m, p);
+      else
+        S::catmull_clark_subdivision(m, p);
+    };
+    refine(sequential, S::threads(1, np));
+    for(const bool reserved : {false, true}) {
+      Mesh parallel = input;
+      if(reserved)
+        parallel.reserve(100000, 300000, 200000);
+      refine(parallel, S::threads(2, np));
+      ASSERT_TRUE(CGAL::is_valid_polygon_mesh(parallel));
+      EXPECT_EQ(fingerprint(parallel), fingerprint(sequential)) << (reserved ? "reserved" : "not reserved");
+    }
+  }
+}
+
+TEST(Parallel, edge_splits_wired_from_the_snapshot_equal_the_soup)
+{
+  // with carried data, the levels go through the face soup and the generic
+  // rebuild; without, the edge splits wire the mesh from a snapshot of the
+  // old faces: every link must be the same (the points differ in the last
+  // bits: the carried path sums merged stencils)
+  const auto check = [](const Mesh& input, const auto& refine, int levels) {
+    Mesh soup = input, snapshot = input;
+    auto label = soup.add_property_map<Mesh::Face_index, int>("f:label", 0).first;
+    S::Carried_data<Mesh> data;
+    data.face_map(label);
+    refine(soup, S::carried_data(data, CGAL::parameters::number_of_iterations(levels)));
+    for(const int threads : {1, 2}) {
+      Mesh fast = snapshot;
+      refine(fast, S::threads(threads, CGAL::parameters::number_of_iterations(levels)));
+      ASSERT_TRUE(CGAL::is_valid_polygon_mesh(fast));
+      EXPECT_EQ(connectivity(fast), connectivity(soup)) << levels << " levels, " << threads << " threads";
+    }
+  };
+  for(const int hole : {0, 7}) {
+    const Mesh triangles = torus(24, 20, true, hole), quads = torus(24, 20, false, hole);
+    for(int levels = 1; levels <= 3; ++levels) {
+      check(triangles, loop, levels);
+      check(quads, catmull_clark, levels);
+      check(triangles, catmull_clark, levels); // triangles, then quads
+    }
+  }
 }
 
 TEST(Parallel, fast_path_equals_the_generic_path)

@@ -157,32 +157,44 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const 
   rebuild_mesh(mesh, vpm, points, soup);
 }
 
+// whether the host makes its new faces from a `Split_snapshot` of the old
+// mesh (the edge splits), which `wire_split` wires straight into a
+// Surface_mesh, with no soup
+template <class Host, class = void>
+struct Wires_from_snapshot : std::false_type
+{
+};
+template <class Host>
+struct Wires_from_snapshot<Host, std::void_t<decltype(Host::new_face_size)>> : std::true_type
+{
+};
+
+// The resize of a Surface_mesh may run beside the loops that read the old
+// mesh only when its accessors do not read the arrays' sizes (which the
+// resize changes): not with CGAL's or the standard library's assertions.
+#if defined(CGAL_NO_ASSERTIONS) && !defined(_GLIBCXX_ASSERTIONS) && !defined(_GLIBCXX_DEBUG) && \
+  !defined(CGAL_SUBDIV_NO_CONCURRENT_RESIZE)
+constexpr bool resize_beside_reads = true;
+#else
+constexpr bool resize_beside_reads = false;
+#endif
+
 /*
- * One level of a Surface_mesh, in place: the host makes the new faces from
- * the old mesh, the mesh is resized (old elements keep their index, so the old
- * mesh is still there, below the new elements), the new points are computed
- * from it, points of new vertices straight into the point map, then the
- * connectivity is wired over the old one. With a parallel `loop`, the faces,
- * the points (double coordinates and a point map of the mesh) and the wiring
- * run in parallel chunks; the result is the same.
+ * The new points of a Surface_mesh, the mesh already resized: the mask runs
+ * for every new vertex (in parallel chunks by `loop` for double points and
+ * the mesh's own point map); points of new vertices go straight into the
+ * point map, those of old vertices wait in `kept` until the old points are no
+ * longer read.
  */
-template <class Mask, class P, class VertexPointMap>
-void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& loop = Parallel_loop())
+template <class Host, class Mask, class P, class VertexPointMap>
+void compute_points(CGAL::Surface_mesh<P>& mesh, const Host& host, const Mask& mask, const VertexPointMap& vpm,
+                    std::size_t old_vertices, const Parallel_loop& loop)
 {
   using SM = CGAL::Surface_mesh<P>;
   using V = typename SM::Vertex_index;
-  using Host = typename Mask::Host;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
-  const Host host(mesh);
-  const std::size_t old_vertices = num_vertices(mesh);
-  const Face_soup soup = host.faces(loop, false);
-  mesh.resize(static_cast<typename SM::size_type>(soup.number_of_vertices()),
-              static_cast<typename SM::size_type>(soup.number_of_edges()),
-              static_cast<typename SM::size_type>(soup.number_of_faces()));
   constexpr bool own_map = std::is_same<VertexPointMap, typename SM::template Property_map<V, Point>>::value;
   if constexpr(own_map) {
-    // new vertices' points go to their place at once; old vertices' points
-    // are read until the end, so theirs wait in `kept`
     Point* out = &vpm[V(0)];
     std::vector<Point> kept(old_vertices);
     const auto store = [&](std::size_t j, const Point& p) { (j < old_vertices ? kept[j] : out[j]) = p; };
@@ -205,7 +217,7 @@ void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPoin
       std::copy(kept.begin(), kept.end(), out);
     }
   } else {
-    std::vector<Point> points(soup.number_of_vertices());
+    std::vector<Point> points(host.number_of_new_vertices());
     host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
       Mesh_point_sum<VertexPointMap> sum(vpm);
       report(sum);
@@ -214,7 +226,100 @@ void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPoin
     for(std::size_t i = 0; i < points.size(); ++i)
       put(vpm, V(static_cast<typename SM::size_type>(i)), points[i]);
   }
-  wire_surface_mesh(mesh, soup, loop);
+}
+
+/*
+ * An edge split of a Surface_mesh with threads, double points in the mesh's
+ * own map: the resize of the arrays (which the standard library fills in one
+ * thread) runs beside the loops that only read the old mesh, the snapshot of
+ * its faces and the masks (every new point into a buffer of its own, copied
+ * into the point map afterwards). Room is reserved first, so the resize does
+ * not move the arrays and the old elements stay where the readers look;
+ * nothing the readers call looks at the arrays' sizes. Returns false (and
+ * does nothing) when not applicable.
+ */
+template <class Host, class Mask, class P, class VertexPointMap>
+bool refine_beside_resize(CGAL::Surface_mesh<P>& mesh, const Host& host, const Mask& mask, const VertexPointMap& vpm,
+                          const Parallel_loop& loop)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using V = typename SM::Vertex_index;
+  using size_type = typename SM::size_type;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  constexpr bool own_map = std::is_same<VertexPointMap, typename SM::template Property_map<V, Point>>::value;
+  if constexpr(resize_beside_reads && own_map && is_double_point_3<Point>()) {
+    if(!loop.is_parallel())
+      return false;
+    const std::size_t old_vertices = num_vertices(mesh);
+    const auto nv = static_cast<size_type>(host.number_of_new_vertices());
+    const auto ne = static_cast<size_type>(host.number_of_new_edges());
+    const auto nf = static_cast<size_type>(host.number_of_new_faces());
+    Face_soup::check_counts(nv, ne);
+    mesh.reserve(nv, ne, nf); // no-op when the room is there (`reserve_levels`)
+    const Point* old_points = &vpm[V(0)]; // stays valid: the resize below is within capacity
+    std::vector<Point> points(nv);
+    Split_snapshot snapshot;
+    const Parallel_loop inner = loop.in_arena();
+    loop.invoke(
+      [&] {
+        snapshot = host.snapshot(inner, true);
+        host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+          Flat_point_sum<Point> sum(old_points);
+          report(sum);
+          points[j] = sum.point();
+        }, inner);
+      },
+      [&] { mesh.resize(nv, ne, nf); });
+    CGAL_assertion(&vpm[V(0)] == old_points);
+    Point* out = &vpm[V(0)];
+    wire_split(mesh, host, snapshot, old_vertices, loop, [&](const Parallel_loop& copy_loop) {
+      copy_loop.for_range(nv, 16384, [&](std::size_t begin, std::size_t end) {
+        std::copy(points.begin() + static_cast<std::ptrdiff_t>(begin),
+                  points.begin() + static_cast<std::ptrdiff_t>(end), out + begin);
+      });
+    });
+    return true;
+  } else {
+    (void)mesh, (void)host, (void)mask, (void)vpm, (void)loop;
+    return false;
+  }
+}
+
+/*
+ * One level of a Surface_mesh, in place: the host makes the new faces from
+ * the old mesh (for the edge splits, a snapshot of the old faces, a quarter
+ * of a soup of the new ones), the mesh is resized (old elements keep their
+ * index, so the old mesh is still there, below the new elements), the new
+ * points are computed from it, points of new vertices straight into the
+ * point map, then the connectivity is wired over the old one. With a
+ * parallel `loop`, the faces, the points (double coordinates and a point map
+ * of the mesh) and the wiring run in parallel chunks, and for the edge splits
+ * the resize beside the snapshot and the points; the result is the same.
+ */
+template <class Mask, class P, class VertexPointMap>
+void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& loop = Parallel_loop())
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using size_type = typename SM::size_type;
+  using Host = typename Mask::Host;
+  const Host host(mesh);
+  const std::size_t old_vertices = num_vertices(mesh);
+  if constexpr(Wires_from_snapshot<Host>::value) {
+    if(refine_beside_resize(mesh, host, mask, vpm, loop))
+      return;
+    const Split_snapshot snapshot = host.snapshot(loop, true);
+    mesh.resize(static_cast<size_type>(host.number_of_new_vertices()),
+                static_cast<size_type>(host.number_of_new_edges()),
+                static_cast<size_type>(host.number_of_new_faces()));
+    compute_points(mesh, host, mask, vpm, old_vertices, loop);
+    wire_split(mesh, host, snapshot, old_vertices, loop);
+  } else {
+    const Face_soup soup = host.faces(loop, false);
+    mesh.resize(static_cast<size_type>(soup.number_of_vertices()), static_cast<size_type>(soup.number_of_edges()),
+                static_cast<size_type>(soup.number_of_faces()));
+    compute_points(mesh, host, mask, vpm, old_vertices, loop);
+    wire_surface_mesh(mesh, soup, loop);
+  }
 }
 
 /// one level that also carries other vertex and face data: the stencils are

@@ -67,7 +67,11 @@ public:
         ++m_corner_count;
   }
 
+  /// the new faces are quads, made from a `Split_snapshot` of the old mesh
+  static constexpr int new_face_size = 4;
+
   std::size_t number_of_new_vertices() const { return m_vertex_count + m_edge_count + m_face_count; }
+  std::size_t number_of_new_edges() const { return 2 * m_edge_count + m_corner_count; }
   std::size_t number_of_new_faces() const { return m_corner_count; }
 
   Vertex_origin origin(std::size_t j) const
@@ -82,26 +86,115 @@ public:
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
   /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
   /// Surface_mesh), visit is called from several threads, once per vertex.
+  /// Reads only the old elements (and the counts taken at construction).
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
-      visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-    });
-    internal::for_each_element(m_number, edges(m_mesh), m_edge_count, loop, [&](auto e) {
+    internal::for_each_element_of(m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
+                                  [&](vertex_descriptor v) {
+                                    visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+                                  });
+    internal::for_each_element_of(m_number, [&] { return edges(m_mesh); }, m_edge_count, loop, [&](auto e) {
       visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
     });
-    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
-      visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
-    });
+    internal::for_each_element_of(m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
+                                  [&](face_descriptor f) {
+                                    visit(m_vertex_count + m_edge_count + m_number(f),
+                                          [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+                                  });
   }
 
   /*
-   * New edges: 2e and 2e+1 are the halves of old edge e (as in
-   * `Triangle_quadrisection`), then one inner edge per face corner, from the
-   * edge point of the corner's incoming halfedge to the face point; corners
-   * are counted in face order, around each face from `halfedge(f)`.
+   * What the new faces are made from: the corners of the old faces, counted
+   * in face order, around each face from `halfedge(f)` (the running sum of
+   * the face sizes: made in two passes when parallel), and the border
+   * halfedges if `border`; in parallel chunks by `loop` (Surface_mesh).
+   * Reads only the old elements.
    */
+  template <class Loop = internal::Parallel_loop>
+  internal::Split_snapshot snapshot(const Loop& loop, bool border) const
+  {
+    using Index = internal::Split_snapshot::Index;
+    internal::Face_soup::check_counts(number_of_new_vertices(), number_of_new_edges());
+    internal::Split_snapshot s;
+    s.face_count = m_face_count;
+    s.face_size = 0;
+    s.corners.resize_for_overwrite(m_corner_count);
+    s.first_corner.resize_for_overwrite(m_face_count + 1);
+    const auto faces = [&] { return CGAL::faces(m_mesh); };
+    // writes the corners of f from s.first_corner[f]; returns how many
+    const auto write_corners = [&](face_descriptor f) {
+      const halfedge_descriptor first = halfedge(f, m_mesh);
+      halfedge_descriptor h = first;
+      std::size_t c = s.first_corner[m_number(f)];
+      do {
+        s.corners[c++] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
+        h = next(h, m_mesh);
+      } while(h != first);
+      return c - s.first_corner[m_number(f)];
+    };
+    if(loop.is_parallel() && internal::Mesh_numbering<Mesh>::dense) {
+      internal::for_each_element_of(m_number, faces, m_face_count, loop, [&](face_descriptor f) {
+        std::size_t size = 0;
+        const halfedge_descriptor first = halfedge(f, m_mesh);
+        halfedge_descriptor h = first;
+        do {
+          ++size;
+          h = next(h, m_mesh);
+        } while(h != first);
+        s.first_corner[m_number(f)] = static_cast<Index>(size);
+      });
+      std::size_t sum = 0;
+      for(std::size_t f = 0; f < m_face_count; ++f) {
+        const std::size_t size = s.first_corner[f];
+        s.first_corner[f] = static_cast<Index>(sum);
+        sum += size;
+      }
+      internal::for_each_element_of(m_number, faces, m_face_count, loop, write_corners);
+    } else { // in face order, in this thread
+      std::size_t running = 0;
+      internal::for_each_element_of(m_number, faces, m_face_count, internal::Parallel_loop(1),
+                                    [&](face_descriptor f) {
+                                      s.first_corner[m_number(f)] = static_cast<Index>(running);
+                                      running += write_corners(f);
+                                    });
+    }
+    s.first_corner[m_face_count] = static_cast<Index>(m_corner_count);
+    if(border && m_corner_count != 2 * m_edge_count)
+      internal::snapshot_border(m_mesh, m_number, 2 * m_edge_count, s);
+    return s;
+  }
+
+  /*
+   * calls emit(new face, corners) for the quads of old face `parent` (4
+   * corners each: new vertex, new halfedge id to the next corner), from the
+   * snapshot: quad c (the old corner ordinal) is (e_c, v_c, e_n, f) for the
+   * old halfedge h_c into old vertex v_c, the next corner n, edge points e
+   * and the face point f. New edges: 2e and 2e+1 are the halves of old edge
+   * e (as in `Triangle_quadrisection`), then one inner edge per old corner,
+   * from the edge point of the corner's incoming halfedge to the face point.
+   */
+  template <class Emit>
+  void for_each_new_face(const internal::Split_snapshot& s, std::size_t parent, const Emit& emit) const
+  {
+    using Index = internal::Face_soup::Index;
+    using Corner = internal::Face_soup::Corner;
+    const std::size_t begin = s.begin(parent), end = s.end(parent);
+    const Index face_point = static_cast<Index>(m_vertex_count + m_edge_count + parent);
+    const std::size_t first_inner = 2 * m_edge_count;
+    for(std::size_t c = begin; c < end; ++c) {
+      const std::size_t n = (c + 1 == end) ? begin : c + 1;
+      const internal::Split_snapshot::Corner h = s.corners[c], h_next = s.corners[n];
+      const Corner quad[4] = {
+        {static_cast<Index>(m_vertex_count + (h.halfedge >> 1)), static_cast<Index>(internal::second_half(h.halfedge))},
+        {h.target, static_cast<Index>(internal::first_half(h_next.halfedge))},
+        {static_cast<Index>(m_vertex_count + (h_next.halfedge >> 1)), static_cast<Index>(2 * (first_inner + n))},
+        {face_point, static_cast<Index>(2 * (first_inner + c) + 1)}};
+      emit(c, quad);
+    }
+  }
+
+  /// the new faces, with their parents
   internal::Face_soup faces() const { return faces(internal::Parallel_loop(1), true); }
 
   /// the new faces, written in parallel chunks by `loop` (Surface_mesh), with
@@ -109,66 +202,10 @@ public:
   template <class Loop>
   internal::Face_soup faces(const Loop& loop, bool parents) const
   {
-    internal::Face_soup soup(number_of_new_vertices(), 2 * m_edge_count + m_corner_count);
-    soup.resize_uniform(m_corner_count, 4, parents);
-    // corner ordinal of halfedge(f) for every face: a running sum of face sizes
-    std::vector<internal::Face_soup::Index> first_corner;
-    if(loop.is_parallel() && internal::Mesh_numbering<Mesh>::dense) {
-      first_corner.resize(m_face_count);
-      internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
-        first_corner[m_number(f)] =
-          static_cast<internal::Face_soup::Index>(CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh).size());
-      });
-      std::size_t sum = 0;
-      for(auto& c : first_corner) {
-        const std::size_t size = c;
-        c = static_cast<internal::Face_soup::Index>(sum);
-        sum += size;
-      }
-    }
-    const std::size_t first_inner = 2 * m_edge_count;
-    std::size_t running = 0; // corner ordinal of halfedge(f), sequentially
-    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
-      const std::size_t parent = m_number(f);
-      const std::size_t face_point = m_vertex_count + m_edge_count + parent;
-      const std::size_t corner = first_corner.empty() ? running : first_corner[parent];
-      const halfedge_descriptor first = halfedge(f, m_mesh);
-      halfedge_descriptor h = first; // h = h_i, running from v_{i-1} to v_i
-      std::size_t c = corner;
-      do {
-        const halfedge_descriptor n = next(h, m_mesh);
-        const std::size_t c_next = (n == first) ? corner : c + 1;
-        soup.set_corner(4 * c, edge_point(h), second_half(h));
-        soup.set_corner(4 * c + 1, m_number(target(h, m_mesh)), first_half(n));
-        soup.set_corner(4 * c + 2, edge_point(n), 2 * (first_inner + c_next));
-        soup.set_corner(4 * c + 3, face_point, 2 * (first_inner + c) + 1);
-        soup.set_parent(c, parent);
-        h = n;
-        ++c;
-      } while(h != first);
-      if(first_corner.empty())
-        running = c;
-    });
-    return soup;
+    return internal::split_soup(*this, snapshot(loop, false), loop, parents);
   }
 
 private:
-  std::size_t edge_point(halfedge_descriptor h) const { return m_vertex_count + m_number(edge(h, m_mesh)); }
-
-  // The halves of old edge e are new edges 2e (from its halfedge's source to
-  // the edge point) and 2e+1 (from the edge point to the target); as
-  // halfedge ids, 4e and 4e+2 along halfedge(e), 4e+3 and 4e+1 against it.
-  std::size_t first_half(halfedge_descriptor h) const
-  {
-    const std::size_t id = m_number(h); // 2e, or 2e+1 against halfedge(e)
-    return (id & 1) == 0 ? 2 * id : 2 * id + 1;
-  }
-  std::size_t second_half(halfedge_descriptor h) const
-  {
-    const std::size_t id = m_number(h);
-    return (id & 1) == 0 ? 2 * id + 2 : 2 * id - 1;
-  }
-
   const Mesh& m_mesh;
   internal::Mesh_numbering<Mesh> m_number;
   std::size_t m_vertex_count;

@@ -43,13 +43,21 @@ public:
     return true;
   }
 
+  /// the new faces are triangles, made from a `Split_snapshot` of the old mesh
+  static constexpr int new_face_size = 3;
+
   explicit Triangle_quadrisection(const Mesh& mesh)
-    : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh))
+    : m_mesh(mesh),
+      m_number(mesh),
+      m_vertex_count(num_vertices(mesh)),
+      m_edge_count(num_edges(mesh)),
+      m_face_count(num_faces(mesh))
   {
   }
 
   std::size_t number_of_new_vertices() const { return m_vertex_count + m_edge_count; }
-  std::size_t number_of_new_faces() const { return 4 * num_faces(m_mesh); }
+  std::size_t number_of_new_edges() const { return 2 * m_edge_count + 3 * m_face_count; }
+  std::size_t number_of_new_faces() const { return 4 * m_face_count; }
 
   Vertex_origin origin(std::size_t j) const
   {
@@ -60,15 +68,71 @@ public:
   /// calls visit(new index, report) for every new vertex; report(acc) makes the
   /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
   /// Surface_mesh), visit is called from several threads, once per vertex.
+  /// Reads only the old elements (and the counts taken at construction).
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
-      visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-    });
-    internal::for_each_element(m_number, edges(m_mesh), m_edge_count, loop, [&](auto e) {
+    internal::for_each_element_of(m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
+                                  [&](vertex_descriptor v) {
+                                    visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+                                  });
+    internal::for_each_element_of(m_number, [&] { return edges(m_mesh); }, m_edge_count, loop, [&](auto e) {
       visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
     });
+  }
+
+  /// what the new faces are made from: the corners of the old faces (from
+  /// halfedge(f)), and the border halfedges if `border`; in parallel chunks
+  /// by `loop` (Surface_mesh). Reads only the old elements.
+  template <class Loop = internal::Parallel_loop>
+  internal::Split_snapshot snapshot(const Loop& loop, bool border) const
+  {
+    using Index = internal::Split_snapshot::Index;
+    internal::Face_soup::check_counts(number_of_new_vertices(), number_of_new_edges());
+    internal::Split_snapshot s;
+    s.face_count = m_face_count;
+    s.face_size = 3;
+    s.corners.resize_for_overwrite(3 * m_face_count);
+    internal::for_each_element_of(m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop, [&](auto f) {
+      halfedge_descriptor h = halfedge(f, m_mesh);
+      const std::size_t c = 3 * m_number(f);
+      for(std::size_t k = 0; k < 3; ++k, h = next(h, m_mesh))
+        s.corners[c + k] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
+    });
+    if(border && 3 * m_face_count != 2 * m_edge_count)
+      internal::snapshot_border(m_mesh, m_number, 2 * m_edge_count, s);
+    return s;
+  }
+
+  /*
+   * calls emit(new face, corners) for the four new faces of old face
+   * `parent` (3 corners each: new vertex, new halfedge id to the next
+   * corner), from the snapshot. With halfedges h_k of the old face (h_0 =
+   * halfedge(f), h_k running from corner k-1 to corner k), edge points m_k
+   * on them and inner edges from m_k to m_k+1 (new edges 2E + 3 parent + k):
+   * the corner triangles (m_k, c_k, m_k+1), then the middle one.
+   */
+  template <class Emit>
+  void for_each_new_face(const internal::Split_snapshot& s, std::size_t parent, const Emit& emit) const
+  {
+    using Index = internal::Face_soup::Index;
+    using Corner = internal::Face_soup::Corner;
+    const internal::Split_snapshot::Corner* h = &s.corners[3 * parent];
+    Index corner[3], middle[3], inner[3], first[3], second[3];
+    for(std::size_t k = 0; k < 3; ++k) {
+      corner[k] = h[k].target;
+      middle[k] = static_cast<Index>(m_vertex_count + (h[k].halfedge >> 1));
+      inner[k] = static_cast<Index>(2 * (2 * m_edge_count + 3 * parent + k));
+      first[k] = static_cast<Index>(internal::first_half(h[k].halfedge));
+      second[k] = static_cast<Index>(internal::second_half(h[k].halfedge));
+    }
+    for(std::size_t k = 0; k < 3; ++k) { // corner triangle at corner[k]
+      const std::size_t j = (k + 1) % 3;
+      const Corner c[3] = {{middle[k], second[k]}, {corner[k], first[j]}, {middle[j], inner[k] ^ 1}};
+      emit(4 * parent + k, c);
+    }
+    const Corner c[3] = {{middle[0], inner[0]}, {middle[1], inner[1]}, {middle[2], inner[2]}}; // middle triangle
+    emit(4 * parent + 3, c);
   }
 
   /// the new faces, with their parents
@@ -79,56 +143,15 @@ public:
   template <class Loop>
   internal::Face_soup faces(const Loop& loop, bool parents) const
   {
-    const std::size_t face_count = num_faces(m_mesh);
-    internal::Face_soup soup(number_of_new_vertices(), 2 * m_edge_count + 3 * face_count);
-    soup.resize_uniform(4 * face_count, 3, parents);
-    internal::for_each_element(m_number, CGAL::faces(m_mesh), face_count, loop, [&](auto f) {
-      const std::size_t parent = m_number(f);
-      const halfedge_descriptor h[3] = {halfedge(f, m_mesh), next(halfedge(f, m_mesh), m_mesh),
-                                        prev(halfedge(f, m_mesh), m_mesh)};
-      std::size_t corner[3], middle[3], inner[3];
-      for(int k = 0; k < 3; ++k) {
-        corner[k] = m_number(target(h[k], m_mesh)); // h[k] runs from corner[k-1] to corner[k]
-        middle[k] = edge_point(h[k]);
-        // new edge from middle[k] to middle[k+1], inside the face
-        inner[k] = 2 * (2 * m_edge_count + 3 * parent + static_cast<std::size_t>(k));
-      }
-      std::size_t c = 12 * parent;
-      for(int k = 0; k < 3; ++k) { // corner triangle at corner[k]
-        const int j = (k + 1) % 3;
-        soup.set_corner(c++, middle[k], second_half(h[k]));
-        soup.set_corner(c++, corner[k], first_half(h[j]));
-        soup.set_corner(c++, middle[j], inner[k] ^ 1);
-        soup.set_parent(4 * parent + static_cast<std::size_t>(k), parent);
-      }
-      for(int k = 0; k < 3; ++k) // middle triangle
-        soup.set_corner(c++, middle[k], inner[k]);
-      soup.set_parent(4 * parent + 3, parent);
-    });
-    return soup;
+    return internal::split_soup(*this, snapshot(loop, false), loop, parents);
   }
 
 private:
-  std::size_t edge_point(halfedge_descriptor h) const { return m_vertex_count + m_number(edge(h, m_mesh)); }
-
-  // The halves of old edge e are new edges 2e (from its halfedge's source to
-  // the edge point) and 2e+1 (from the edge point to the target); as
-  // halfedge ids, 4e and 4e+2 along halfedge(e), 4e+3 and 4e+1 against it.
-  std::size_t first_half(halfedge_descriptor h) const
-  {
-    const std::size_t id = m_number(h); // 2e, or 2e+1 against halfedge(e)
-    return (id & 1) == 0 ? 2 * id : 2 * id + 1;
-  }
-  std::size_t second_half(halfedge_descriptor h) const
-  {
-    const std::size_t id = m_number(h);
-    return (id & 1) == 0 ? 2 * id + 2 : 2 * id - 1;
-  }
-
   const Mesh& m_mesh;
   internal::Mesh_numbering<Mesh> m_number;
   std::size_t m_vertex_count;
   std::size_t m_edge_count;
+  std::size_t m_face_count;
 };
 
 } // namespace Subdiv

@@ -108,6 +108,30 @@ void for_each_element(const Numbering&, const Range& range, std::size_t count, c
   }
 }
 
+/*
+ * The same, the range made by `make_range()` only when the numbering is not
+ * dense: on a Surface_mesh the loop then reads nothing of the mesh but the
+ * elements it visits (not the element counts), so it may run while the
+ * mesh's arrays grow within their capacity.
+ */
+template <class Numbering, class MakeRange, class Loop, class F>
+void for_each_element_of(const Numbering& number, const MakeRange& make_range, std::size_t count, const Loop& loop,
+                         const F& f)
+{
+  if constexpr(Numbering::dense) {
+    using Range = decltype(make_range());
+    using Descriptor = std::decay_t<decltype(*std::declval<const Range&>().begin())>;
+    using Size = decltype(std::declval<Descriptor>().idx());
+    (void)number;
+    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        f(Descriptor(static_cast<Size>(i)));
+    });
+  } else {
+    for_each_element(number, make_range(), count, loop, f);
+  }
+}
+
 } // namespace internal
 } // namespace Subdiv
 } // namespace CGAL

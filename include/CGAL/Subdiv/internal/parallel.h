@@ -6,6 +6,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include <tbb/info.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -34,7 +36,15 @@ namespace internal {
 class Parallel_loop
 {
 public:
-  explicit Parallel_loop(int threads = 1) : m_threads(threads < 0 ? 1 : threads) {}
+  explicit Parallel_loop(int threads = 1) : m_threads(threads < 0 ? 1 : threads)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    // one arena for all the loops of this object (and its copies): a worker
+    // joins an arena that is already there at once, a new one often late
+    if(m_threads > 1)
+      m_arena = std::make_shared<tbb::task_arena>(m_threads);
+#endif
+  }
 
   int threads() const { return m_threads; }
 
@@ -67,22 +77,59 @@ public:
     f(std::size_t(0), n);
   }
 
-  /// runs f() in an arena of `threads` threads (or in TBB's default one)
+  /// runs f() in an arena of `threads` threads (or in TBB's default one);
+  /// a loop made by `in_arena()` runs f() where it is called
   template <class F>
   void run(const F& f) const
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    if(m_threads > 1) {
-      tbb::task_arena arena(m_threads);
-      arena.execute(f);
+    if(m_arena && !m_in_arena) {
+      m_arena->execute(f);
       return;
     }
 #endif
     f();
   }
 
+  /// the same loop, for calls from inside its own `run()`: its loops join
+  /// the arena they are called from instead of making one of their own, so
+  /// that the threads of `run()` take part in them
+  Parallel_loop in_arena() const
+  {
+    Parallel_loop inner = *this;
+    inner.m_in_arena = true;
+    return inner;
+  }
+
+  /// calls a() and b(), side by side when parallel, in the arena of `run()`:
+  /// a() as a task the other threads take (its parallel loops in chunks), b()
+  /// in this thread, which then helps with what is left of a(); so b() should
+  /// be the sequential part, and nothing waits for a thread that comes late
+  /// or not at all
+  template <class A, class B>
+  void invoke(const A& a, const B& b) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(is_parallel()) {
+      run([&] {
+        tbb::task_group group;
+        group.run([&] { a(); });
+        b();
+        group.wait();
+      });
+      return;
+    }
+#endif
+    a();
+    b();
+  }
+
 private:
   int m_threads;
+  bool m_in_arena = false;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::shared_ptr<tbb::task_arena> m_arena;
+#endif
 };
 
 /// one T per thread (scratch space of parallel loops), found by the thread's

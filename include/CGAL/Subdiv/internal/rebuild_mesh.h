@@ -8,6 +8,7 @@
 
 #include <CGAL/Subdiv/errors.h>
 
+#include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/Raw_array.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 
@@ -60,6 +61,12 @@ public:
   };
 
   Face_soup(std::size_t vertices, std::size_t edges) : m_vertex_count(vertices), m_edge_count(edges)
+  {
+    check_counts(vertices, edges);
+  }
+
+  /// throws `Bad_input` if new vertices or halfedges do not fit in an Index
+  static void check_counts(std::size_t vertices, std::size_t edges)
   {
     require(2 * edges < (std::size_t(1) << 32) && vertices < (std::size_t(1) << 32),
             "the refined mesh would have more than 2^31 edges");
@@ -134,6 +141,84 @@ private:
   Raw_array<std::size_t> m_ends; // one past the last corner of each face
   Raw_array<Index> m_parents;
 };
+
+/*
+ * The halves of old edge e in the edge splits (`Triangle_quadrisection`,
+ * `Quad_split`): new edges 2e (from the source of halfedge(e) to the edge
+ * point) and 2e+1 (from the edge point to its target); as halfedge ids, 4e
+ * and 4e+2 along halfedge(e), 4e+3 and 4e+1 against it. `id` is the old
+ * halfedge's ordinal (2e along halfedge(e), 2e+1 against it).
+ */
+inline std::size_t first_half(std::size_t id) { return (id & 1) == 0 ? 2 * id : 2 * id + 1; }
+inline std::size_t second_half(std::size_t id) { return (id & 1) == 0 ? 2 * id + 2 : 2 * id - 1; }
+
+/*
+ * What an edge split needs of the old mesh to make the new faces, instead of
+ * a `Face_soup` of them (8 bytes per new corner): every old face corner, in
+ * face order and around each face from halfedge(f), as the ordinal of its
+ * halfedge and of that halfedge's target (8 bytes per old corner, a quarter
+ * of the soup of a triangle or quad split), and, when the new mesh is wired
+ * from it, the old border halfedges. The host expands it into the new faces
+ * (`for_each_new_face`), into a soup or straight into a Surface_mesh
+ * (`wire_split`); it is taken before the old connectivity is overwritten.
+ */
+struct Split_snapshot
+{
+  using Index = std::uint32_t;
+  struct Corner
+  {
+    Index halfedge;
+    Index target;
+  };
+  struct Border
+  {
+    Index halfedge;
+    Index target;
+    Index next;
+  };
+
+  std::size_t face_count = 0;
+  std::size_t face_size = 0;     // every face has `face_size` corners, or 0: see `first_corner`
+  Raw_array<Corner> corners;     // old corners in face order
+  Raw_array<Index> first_corner; // face_size 0: face f's corners are [first_corner[f], first_corner[f+1])
+  std::vector<Border> border;    // old border halfedges, in ordinal order (if asked for)
+
+  std::size_t begin(std::size_t f) const { return face_size != 0 ? f * face_size : first_corner[f]; }
+  std::size_t end(std::size_t f) const { return face_size != 0 ? (f + 1) * face_size : first_corner[f + 1]; }
+};
+
+/// adds the border halfedges of `mesh` (`halfedge_count` of them in all) to
+/// the snapshot, in one thread (cheap: called only for meshes with a border)
+template <class Mesh, class Numbering>
+void snapshot_border(const Mesh& mesh, const Numbering& number, std::size_t halfedge_count, Split_snapshot& snapshot)
+{
+  using Index = Split_snapshot::Index;
+  for_each_element_of(number, [&] { return halfedges(mesh); }, halfedge_count, Parallel_loop(1), [&](auto h) {
+    if(is_border(h, mesh))
+      snapshot.border.push_back(
+        Split_snapshot::Border{static_cast<Index>(number(h)), static_cast<Index>(number(target(h, mesh))),
+                               static_cast<Index>(number(next(h, mesh)))});
+  });
+}
+
+/// the soup of an edge split, expanded from the snapshot by the host's
+/// `for_each_new_face` (in parallel chunks by old face), with the parents or not
+template <class Host, class Loop>
+Face_soup split_soup(const Host& host, const Split_snapshot& snapshot, const Loop& loop, bool parents)
+{
+  constexpr int N = Host::new_face_size;
+  Face_soup soup(host.number_of_new_vertices(), host.number_of_new_edges());
+  soup.resize_uniform(host.number_of_new_faces(), N, parents);
+  loop.for_range(snapshot.face_count, 1024, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
+      host.for_each_new_face(snapshot, f, [&](std::size_t face, const Face_soup::Corner* c) {
+        for(int k = 0; k < N; ++k)
+          soup.set_corner(N * face + static_cast<std::size_t>(k), c[k].vertex, c[k].halfedge);
+        soup.set_parent(face, f);
+      });
+  });
+  return soup;
+}
 
 // Empty the mesh but keep its property maps, so that a vertex point map (or
 // any other map) the caller holds stays valid and grows with the new elements.
@@ -316,6 +401,98 @@ void wire_surface_mesh(CGAL::Surface_mesh<P>& mesh, const Face_soup& soup, const
     mesh.set_next(border, around);
     mesh.set_halfedge(mesh.target(border), border);
   }
+}
+
+/*
+ * Surface_mesh, an edge split: the mesh already resized to the new counts is
+ * wired straight from the snapshot of the old faces, the new faces made by
+ * the host's `for_each_new_face`, with the result `wire_surface_mesh` gets
+ * from the soup of the same faces (every link the same): faces in parallel
+ * chunks by old face, each writing its own halfedges whole (face, target,
+ * next, prev); the halfedge of each vertex in a pass of its own, in new face
+ * order (the incoming halfedge of the last face around it), then the halves
+ * of the old border halfedges (border vertices keep their incoming border
+ * halfedge). With a parallel `loop` that pass runs beside the faces.
+ */
+template <class P, class Host, class Also>
+void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snapshot& snapshot,
+                std::size_t old_vertex_count, const Parallel_loop& loop, const Also& also)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using size_type = typename SM::size_type;
+  using V = typename SM::Vertex_index;
+  using H = typename SM::Halfedge_index;
+  using F = typename SM::Face_index;
+  using Corner = Face_soup::Corner;
+  constexpr int N = Host::new_face_size;
+  CGAL_precondition(mesh.number_of_halfedges() == 2 * host.number_of_new_edges() &&
+                    mesh.number_of_faces() == host.number_of_new_faces());
+
+  const auto wire_faces = [&](const Parallel_loop& faces_loop) {
+    faces_loop.for_range(snapshot.face_count, 512, [&](std::size_t first, std::size_t last) {
+      for(std::size_t f = first; f < last; ++f)
+        host.for_each_new_face(snapshot, f, [&](std::size_t new_face, const Corner* c) {
+          const F face(static_cast<size_type>(new_face));
+          for(int k = 0; k < N; ++k) {
+            const int n = (k + 1 == N) ? 0 : k + 1, p = (k == 0) ? N - 1 : k - 1;
+            const H h(static_cast<size_type>(c[k].halfedge));
+            mesh.set_face(h, face);
+            mesh.set_target(h, V(static_cast<size_type>(c[n].vertex)));
+            mesh.set_next_only(h, H(static_cast<size_type>(c[n].halfedge)));
+            mesh.set_prev_only(h, H(static_cast<size_type>(c[p].halfedge)));
+          }
+          mesh.set_halfedge(face, H(static_cast<size_type>(c[0].halfedge)));
+        });
+    });
+  };
+  const auto wire_vertices_and_border = [&] {
+    for(std::size_t f = 0; f < snapshot.face_count; ++f)
+      host.for_each_new_face(snapshot, f, [&](std::size_t, const Corner* c) {
+        for(int k = 0; k < N; ++k)
+          mesh.set_halfedge(V(static_cast<size_type>(c[(k + 1 == N) ? 0 : k + 1].vertex)),
+                            H(static_cast<size_type>(c[k].halfedge)));
+      });
+    // the halves of an old border halfedge b: the first from source(b) to
+    // the edge point, the second from there to target(b), then on to the
+    // first half of the next border halfedge
+    for(const Split_snapshot::Border& b : snapshot.border) {
+      const H first(static_cast<size_type>(first_half(b.halfedge)));
+      const H second(static_cast<size_type>(second_half(b.halfedge)));
+      const V edge_point(static_cast<size_type>(old_vertex_count + (b.halfedge >> 1)));
+      mesh.set_face(first, SM::null_face());
+      mesh.set_face(second, SM::null_face());
+      mesh.set_target(first, edge_point);
+      mesh.set_target(second, V(static_cast<size_type>(b.target)));
+      mesh.set_next(first, second);
+      mesh.set_next(second, H(static_cast<size_type>(first_half(b.next))));
+      mesh.set_halfedge(edge_point, first);
+      mesh.set_halfedge(V(static_cast<size_type>(b.target)), second);
+    }
+  };
+  if(!loop.is_parallel()) {
+    wire_faces(loop);
+    wire_vertices_and_border();
+    also(loop);
+    return;
+  }
+  // the vertex pass writes only vertices and border halfedges, the faces
+  // only halfedges with a face and faces: they run side by side
+  const Parallel_loop inner = loop.in_arena();
+  loop.invoke(
+    [&] {
+      wire_faces(inner);
+      also(inner);
+    },
+    wire_vertices_and_border);
+}
+
+/// the same; `also(loop)`, which must write nothing the wiring writes, runs
+/// in the loop of the faces, after them
+template <class P, class Host>
+void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snapshot& snapshot,
+                std::size_t old_vertex_count, const Parallel_loop& loop)
+{
+  wire_split(mesh, host, snapshot, old_vertex_count, loop, [](const Parallel_loop&) {});
 }
 
 // Surface_mesh: the mesh is resized to the new counts and wired in place (see
