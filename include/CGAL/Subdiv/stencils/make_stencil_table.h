@@ -124,18 +124,35 @@ template <class FT>
 struct Row_sink
 {
   using Index = std::uint32_t;
+  // double weights: the arrays are kept at the size of their room (nothing is
+  // initialised) and cut to their terms at the end; exact numbers: they grow
+  // row by row (no room of constructed numbers)
+  static constexpr bool raw = std::is_trivially_copyable<FT>::value;
   Raw_array<std::size_t>& ends;
   Raw_array<Index>& indices;
   Value_array<FT>& weights;
+  std::size_t rows = 0; // rows closed
   std::size_t size = 0; // terms of the closed rows
   std::size_t room = 0;
 
+  /// room for `row_count` rows (exactly) and `terms` terms (to begin with)
+  void reserve(std::size_t row_count, std::size_t terms)
+  {
+    resize_for_overwrite(ends, rows + row_count);
+    reserve_terms(terms);
+  }
   void reserve_terms(std::size_t n)
   {
     if(n <= room)
       return;
+    resize_for_overwrite(indices, size); // only the terms so far are moved
+    resize_for_overwrite(weights, size);
     indices.reserve(n);
     weights.reserve(n);
+    if constexpr(raw) {
+      resize_for_overwrite(indices, n);
+      resize_for_overwrite(weights, n);
+    }
     room = n;
   }
   /// room for at most `most` terms of the next row: where its indices and weights go
@@ -143,17 +160,22 @@ struct Row_sink
   {
     if(size + most > room)
       reserve_terms((std::max)(2 * room, size + most));
-    resize_for_overwrite(indices, size + most);
-    resize_for_overwrite(weights, size + most);
+    if constexpr(!raw) {
+      resize_for_overwrite(indices, size + most);
+      resize_for_overwrite(weights, size + most);
+    }
     return {indices.data() + size, weights.data() + size};
   }
   void close(std::size_t count)
   {
     size += count;
-    ends.push_back(size);
+    if(rows == ends.size()) // more rows than reserved (a host with several per element)
+      resize_for_overwrite(ends, 2 * rows + 16);
+    ends[rows++] = size;
   }
   void finish()
   {
+    resize_for_overwrite(ends, rows);
     resize_for_overwrite(indices, size);
     resize_for_overwrite(weights, size);
   }
@@ -204,8 +226,7 @@ public:
       for(std::size_t p = first; p < last; ++p) {
         Row_chunk<FT>* chunk = m_chunks[base + p].get();
         const std::size_t begin = p * m_piece, end = (std::min)(n, begin + m_piece);
-        chunk->ends.reserve(end - begin);
-        chunk->sink.reserve_terms((end - begin) * m_room_per_row);
+        chunk->sink.reserve(end - begin, (end - begin) * m_room_per_row);
         Row_chunk<FT>*& slot = m_current.local();
         slot = chunk;
         f(begin, end);
@@ -309,20 +330,18 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
   if(!loop.is_parallel()) {
     Compose_scratch<FT> scratch;
     Row_sink<FT> sink{ends, indices, weights};
-    sink.reserve_terms(rows * room_per_row);
-    ends.reserve(rows);
+    sink.reserve(rows, rows * room_per_row);
     bool in_order = true;
     host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-      if(!in_order || j != ends.size()) {
+      if(!in_order || j != sink.rows) {
         in_order = false;
         return;
       }
       sink.close(compose(scratch, report, [&](std::size_t most) { return sink.open(most); }));
     });
-    if(in_order && ends.size() == rows) {
-      sink.finish();
+    sink.finish();
+    if(in_order && sink.rows == rows)
       return table;
-    }
     ends.clear();
     indices.clear();
     weights.clear();
