@@ -274,8 +274,13 @@ subdiv_cli_test(surface_displace ARGS surface ${tetra} ${mesh_out} --scheme loop
   --displace ${SUBDIV_CLI_DIR}/tetra_heights.txt
   OUTPUT @WORK@/out.off VERTICES 10 FACES 16 STDOUT_REGEX "loop-warren, 1 level, displaced: 4 V, 6 E, 4 F -> 10 V, 24 E, 16 F"
   FILE @WORK@/out.off FILE_REGEX "\n${displaced} ${displaced} ${displaced}\n")
-subdiv_surface_error(surface_limit_doo_sabin 1 "doo-sabin is a dual scheme, its vertices are not points of the limit surface"
-  ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 1 --limit)
+# doo-sabin (dual): a vertex goes to the limit of its vertex face, the average of
+# its three corner points (9/16, 3/16, 3/16, 1/16): (0,0,0) of the unit cube to (1/6, 1/6, 1/6)
+set(near_sixth "0\\.1666666666666666[0-9]*")
+subdiv_cli_test(surface_limit_doo_sabin ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 0 --limit
+  OUTPUT @WORK@/out.off VERTICES 8 FACES 6 FILE @WORK@/out.off FILE_REGEX "\n${near_sixth} ${near_sixth} ${near_sixth}\n")
+subdiv_cli_test(surface_limit_doo_sabin_levels ARGS surface ${cube} ${mesh_out} --scheme doo-sabin --levels 2 --limit
+  OUTPUT @WORK@/out.off VERTICES 96 FACES 98)
 # sqrt3 border vertices are analysed too (over a resting and a refining step)
 subdiv_cli_test(surface_limit_sqrt3_border ARGS surface ${SUBDIV_CLI_DIR}/open_square.off ${mesh_out} --scheme sqrt3 --levels 1 --limit
   OUTPUT @WORK@/out.off VERTICES 6 FACES 6)

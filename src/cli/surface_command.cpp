@@ -40,9 +40,9 @@ writing not included).
 
 const char* const surface_help_tail = R"(  --levels N            number of refinement levels (N >= 0)
   --limit               then move every vertex to its limit position (the
-                        limit masks of the scheme's eigen-analysis; all
-                        schemes but doo-sabin, whose vertices are not on the
-                        limit surface)
+                        limit masks of the scheme's eigen-analysis; doo-sabin,
+                        a dual scheme: the limit of the face the next step
+                        makes of the corners at the vertex)
   --displace HEIGHTS    displacement: HEIGHTS holds one height per vertex of
                         INPUT, in INPUT's vertex order, one per line (a decimal
                         or a fraction; blank lines and # comments skipped).
@@ -146,8 +146,6 @@ int surface_command(const std::vector<std::string>& arguments)
   const Surface_scheme& scheme = find_surface_scheme(args.value("--scheme"));
   const bool verbose = args.has("-v");
   const bool displace = args.has("--displace");
-  if(displace || args.has("--limit"))
-    check_limit_scheme(scheme);
 
   std::vector<std::string> notes;
   Surface mesh = read_surface(input, args.has("--repair"), notes);

@@ -9,6 +9,7 @@
 #include <CGAL/Subdiv/analysis/limit.h>
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
 #include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
@@ -19,6 +20,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <stdexcept>
 
 namespace cgal_subdiv {
 namespace {
@@ -41,6 +43,8 @@ void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
     f.template operator()<Warren_loop>();
   else if(name == "catmull-clark")
     f.template operator()<SD::Catmull_clark_mask>();
+  else if(name == "doo-sabin") // dual: the limit of each vertex's vertex face (doc/limit.md)
+    f.template operator()<SD::Doo_sabin_mask>();
   else if(name == "sqrt3")
     f.template operator()<SD::Sqrt3_mask>();
   else if(name == "butterfly")
@@ -54,7 +58,7 @@ void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
   else if(name == "linear")
     f.template operator()<SD::Linear_quad_mask>();
   else
-    check_limit_scheme(scheme);
+    throw std::logic_error("no limit masks for scheme '" + name + "'"); // every scheme has them
 }
 
 struct Project
@@ -105,13 +109,6 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
     throw Input_error("HEIGHTS '" + path + "' has " + std::to_string(heights.size()) + " heights, INPUT has " +
                       std::to_string(vertices) + " vertices (one height per vertex, in INPUT's order)");
   return heights;
-}
-
-void check_limit_scheme(const Surface_scheme& scheme)
-{
-  if(scheme.name == "doo-sabin")
-    throw Input_error("--limit and --displace need the limit masks of vertices; doo-sabin is a dual scheme, its "
-                      "vertices are not points of the limit surface");
 }
 
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme)

@@ -23,8 +23,6 @@ namespace cgal_subdiv {
  */
 std::vector<double> read_heights(const std::string& path, std::size_t vertices);
 
-/// \throws Input_error if `scheme` has no vertex limit masks (doo-sabin)
-void check_limit_scheme(const Surface_scheme& scheme);
 
 /// moves every vertex of `mesh` to its limit position under `scheme`
 /// \throws CGAL::Subdiv::Bad_input when the analysis does not cover a vertex
