@@ -300,7 +300,18 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
     const Index* from = coarse_indices;
     const FT* from_weights = coarse_weights;
     std::size_t count = 0;
-    for(std::size_t k = 0; k < acc.size; ++k) {
+    { // the first row brings only new sources (a row lists each source once)
+      const Index v = terms[0].first;
+      const FT w = terms[0].second;
+      const std::size_t begin = v == 0 ? 0 : coarse_ends[v - 1], end = coarse_ends[v];
+      for(std::size_t t = begin; t < end; ++t) {
+        const Index s = from[t];
+        stamps[s] = generation;
+        out_indices[count++] = s;
+        sums[s] = w * from_weights[t];
+      }
+    }
+    for(std::size_t k = 1; k < acc.size; ++k) {
       const Index v = terms[k].first;
       const FT w = terms[k].second;
       const std::size_t begin = v == 0 ? 0 : coarse_ends[v - 1], end = coarse_ends[v];
