@@ -412,7 +412,8 @@ void wire_surface_mesh(CGAL::Surface_mesh<P>& mesh, const Face_soup& soup, const
  * next, prev); the halfedge of each vertex in a pass of its own, in new face
  * order (the incoming halfedge of the last face around it), then the halves
  * of the old border halfedges (border vertices keep their incoming border
- * halfedge). With a parallel `loop` that pass runs beside the faces.
+ * halfedge). In one thread the vertices are wired with the faces, in one
+ * pass; with a parallel `loop` their pass runs beside the faces.
  */
 template <class P, class Host, class Also>
 void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snapshot& snapshot,
@@ -428,7 +429,9 @@ void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snaps
   CGAL_precondition(mesh.number_of_halfedges() == 2 * host.number_of_new_edges() &&
                     mesh.number_of_faces() == host.number_of_new_faces());
 
-  const auto wire_faces = [&](const Parallel_loop& faces_loop) {
+  // the halfedges of the new faces and the faces; with `vertices` (in one
+  // thread, in new face order) the halfedges of the vertices too
+  const auto wire_faces = [&](const Parallel_loop& faces_loop, auto vertices) {
     faces_loop.for_range(snapshot.face_count, 512, [&](std::size_t first, std::size_t last) {
       for(std::size_t f = first; f < last; ++f)
         host.for_each_new_face(snapshot, f, [&](std::size_t new_face, const Corner* c) {
@@ -440,18 +443,22 @@ void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snaps
             mesh.set_target(h, V(static_cast<size_type>(c[n].vertex)));
             mesh.set_next_only(h, H(static_cast<size_type>(c[n].halfedge)));
             mesh.set_prev_only(h, H(static_cast<size_type>(c[p].halfedge)));
+            if constexpr(decltype(vertices)::value)
+              mesh.set_halfedge(V(static_cast<size_type>(c[n].vertex)), h);
           }
           mesh.set_halfedge(face, H(static_cast<size_type>(c[0].halfedge)));
         });
     });
   };
-  const auto wire_vertices_and_border = [&] {
+  const auto wire_vertices = [&] {
     for(std::size_t f = 0; f < snapshot.face_count; ++f)
       host.for_each_new_face(snapshot, f, [&](std::size_t, const Corner* c) {
         for(int k = 0; k < N; ++k)
           mesh.set_halfedge(V(static_cast<size_type>(c[(k + 1 == N) ? 0 : k + 1].vertex)),
                             H(static_cast<size_type>(c[k].halfedge)));
       });
+  };
+  const auto wire_border = [&] {
     // the halves of an old border halfedge b: the first from source(b) to
     // the edge point, the second from there to target(b), then on to the
     // first half of the next border halfedge
@@ -470,8 +477,8 @@ void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snaps
     }
   };
   if(!loop.is_parallel()) {
-    wire_faces(loop);
-    wire_vertices_and_border();
+    wire_faces(loop, std::true_type());
+    wire_border();
     also(loop);
     return;
   }
@@ -480,10 +487,13 @@ void wire_split(CGAL::Surface_mesh<P>& mesh, const Host& host, const Split_snaps
   const Parallel_loop inner = loop.in_arena();
   loop.invoke(
     [&] {
-      wire_faces(inner);
+      wire_faces(inner, std::false_type());
       also(inner);
     },
-    wire_vertices_and_border);
+    [&] {
+      wire_vertices();
+      wire_border();
+    });
 }
 
 /// the same; `also(loop)`, which must write nothing the wiring writes, runs
