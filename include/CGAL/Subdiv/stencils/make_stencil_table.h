@@ -191,26 +191,36 @@ struct Row_chunk
 {
   std::size_t first = 0, rows = 0;
   bool in_order = true;
+  Compose_scratch<FT>* scratch = nullptr; // of the thread that makes the chunk
   Raw_array<std::size_t> ends;
   Raw_array<std::uint32_t> indices;
   Value_array<FT> weights;
   Row_sink<FT> sink{ends, indices, weights};
 };
 
+/// the chunk the calling thread is filling, if any (see `Chunked_loop`)
+template <class FT>
+Row_chunk<FT>*& current_chunk()
+{
+  static thread_local Row_chunk<FT>* chunk = nullptr;
+  return chunk;
+}
+
 /*
  * The loop given to a host's `for_each_new_vertex` in the parallel single
  * pass: splits each of its loops into pieces of `piece` elements, run in
  * parallel by `loop`, and records a `Row_chunk` per piece (in the order of
  * the loops and pieces, which is the order of the new vertices for the hosts
- * of the package); while a piece runs, `current.local()` is its chunk.
+ * of the package); while a piece runs, `current_chunk()` is its chunk in the
+ * thread that runs it.
  */
 template <class FT>
 class Chunked_loop
 {
 public:
   Chunked_loop(const Parallel_loop& loop, std::size_t piece, std::size_t room_per_row,
-               std::vector<std::unique_ptr<Row_chunk<FT>>>& chunks, Per_thread<Row_chunk<FT>*>& current)
-    : m_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_current(current)
+               std::vector<std::unique_ptr<Row_chunk<FT>>>& chunks, Per_thread<Compose_scratch<FT>>& scratches)
+    : m_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_scratches(scratches)
   {
   }
   bool is_parallel() const { return m_loop.is_parallel(); }
@@ -227,10 +237,12 @@ public:
         Row_chunk<FT>* chunk = m_chunks[base + p].get();
         const std::size_t begin = p * m_piece, end = (std::min)(n, begin + m_piece);
         chunk->sink.reserve(end - begin, (end - begin) * m_room_per_row);
-        Row_chunk<FT>*& slot = m_current.local();
-        slot = chunk;
+        chunk->scratch = &m_scratches.local();
+        Row_chunk<FT>*& current = current_chunk<FT>();
+        Row_chunk<FT>* const outer = current;
+        current = chunk;
         f(begin, end);
-        slot = nullptr;
+        current = outer;
       }
     });
   }
@@ -239,7 +251,7 @@ private:
   const Parallel_loop& m_loop;
   std::size_t m_piece, m_room_per_row;
   std::vector<std::unique_ptr<Row_chunk<FT>>>& m_chunks;
-  Per_thread<Row_chunk<FT>*>& m_current;
+  Per_thread<Compose_scratch<FT>>& m_scratches;
 };
 
 /*
@@ -359,12 +371,11 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
   } else {
     // one pass: each piece of the host's loops into a chunk of its own
     std::vector<std::unique_ptr<Row_chunk<FT>>> chunks;
-    Per_thread<Row_chunk<FT>*> current;
     Per_thread<Compose_scratch<FT>> scratches;
     const std::size_t piece = 4096;
-    const Chunked_loop<FT> chunked(loop, piece, room_per_row, chunks, current);
+    const Chunked_loop<FT> chunked(loop, piece, room_per_row, chunks, scratches);
     host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-      Row_chunk<FT>* chunk = current.local();
+      Row_chunk<FT>* chunk = current_chunk<FT>();
       if(chunk == nullptr || !chunk->in_order)
         return;
       if(chunk->rows == 0)
@@ -374,7 +385,7 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
         return;
       }
       Row_sink<FT>& sink = chunk->sink;
-      sink.close(compose(scratches.local(), report, [&](std::size_t most) { return sink.open(most); }));
+      sink.close(compose(*chunk->scratch, report, [&](std::size_t most) { return sink.open(most); }));
       ++chunk->rows;
     }, chunked);
     // the chunks must hold every row once, in order
