@@ -60,27 +60,30 @@ struct Compose_scratch
 {
   using Index = std::uint32_t;
   std::vector<std::pair<Index, FT>> report;
-  // the accumulator: sums and stamps apart, so that the stamps (4 bytes per
-  // coarse vertex), read for every term, stay in the first-level cache
-  std::vector<FT> sums;
-  std::vector<std::uint32_t> stamps;
+  // the accumulator: sum and stamp side by side (one cache line for both:
+  // better than two arrays when the coarse vertices outgrow the caches)
+  struct Entry
+  {
+    FT sum;
+    std::uint32_t stamp;
+  };
+  std::vector<Entry> entries;
   std::vector<Index> indices; // a row made outside a table (the two passes)
   std::vector<FT> weights;
   std::uint32_t generation = 0;
 
   void prepare(std::size_t sources)
   {
-    if(stamps.size() != sources) {
-      sums.assign(sources, FT(0));
-      stamps.assign(sources, 0);
+    if(entries.size() != sources) {
+      entries.assign(sources, Entry{FT(0), 0});
       generation = 0;
     }
   }
   std::uint32_t next_generation()
   {
     if(++generation == 0) { // wrapped: forget every stamp
-      for(std::uint32_t& stamp : stamps)
-        stamp = 0;
+      for(Entry& e : entries)
+        e.stamp = 0;
       generation = 1;
     }
     return generation;
@@ -307,8 +310,7 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
     Index* out_indices = out.first;
     scratch.prepare(sources);
     const std::uint32_t generation = scratch.next_generation();
-    FT* sums = scratch.sums.data();
-    std::uint32_t* stamps = scratch.stamps.data();
+    auto* entries = scratch.entries.data();
     const Index* from = coarse_indices;
     const FT* from_weights = coarse_weights;
     std::size_t count = 0;
@@ -318,9 +320,9 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
       const std::size_t begin = v == 0 ? 0 : coarse_ends[v - 1], end = coarse_ends[v];
       for(std::size_t t = begin; t < end; ++t) {
         const Index s = from[t];
-        stamps[s] = generation;
+        entries[s].stamp = generation;
         out_indices[count++] = s;
-        sums[s] = w * from_weights[t];
+        entries[s].sum = w * from_weights[t];
       }
     }
     for(std::size_t k = 1; k < acc.size; ++k) {
@@ -329,18 +331,18 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
       const std::size_t begin = v == 0 ? 0 : coarse_ends[v - 1], end = coarse_ends[v];
       for(std::size_t t = begin; t < end; ++t) {
         const Index s = from[t];
-        if(stamps[s] != generation) {
-          stamps[s] = generation;
+        if(entries[s].stamp != generation) {
+          entries[s].stamp = generation;
           out_indices[count++] = s;
-          sums[s] = w * from_weights[t];
+          entries[s].sum = w * from_weights[t];
         } else {
-          sums[s] += w * from_weights[t];
+          entries[s].sum += w * from_weights[t];
         }
       }
     }
     FT* out_weights = out.second;
     for(std::size_t c = 0; c < count; ++c)
-      out_weights[c] = sums[out_indices[c]];
+      out_weights[c] = entries[out_indices[c]].sum;
     return count;
   };
 
