@@ -241,11 +241,13 @@ public:
         const std::size_t begin = p * m_piece, end = (std::min)(n, begin + m_piece);
         chunk->sink.reserve(end - begin, (end - begin) * m_room_per_row);
         chunk->scratch = &m_scratches.local();
-        Row_chunk<FT>*& current = current_chunk<FT>();
-        Row_chunk<FT>* const outer = current;
-        current = chunk;
+        struct Current // the chunk of this thread while f runs (even if it throws)
+        {
+          Row_chunk<FT>* const outer = current_chunk<FT>();
+          explicit Current(Row_chunk<FT>* c) { current_chunk<FT>() = c; }
+          ~Current() { current_chunk<FT>() = outer; }
+        } current(chunk);
         f(begin, end);
-        current = outer;
       }
     });
   }
