@@ -268,6 +268,18 @@ TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with
     Double_mesh refined;
     same(S::make_stencil_table(coarse, mask, levels, &refined, S::threads(2)), composed,
          mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
+    // the refined mesh: the connectivity subdivide() makes, link for link
+    Double_mesh reference = coarse;
+    S::subdivide(reference, mask, CGAL::parameters::number_of_iterations(levels));
+    ASSERT_TRUE(CGAL::is_valid_polygon_mesh(refined)) << mask.name();
+    ASSERT_EQ(refined.number_of_halfedges(), reference.number_of_halfedges()) << mask.name();
+    for(auto h : halfedges(reference)) {
+      ASSERT_EQ(refined.next(h), reference.next(h)) << mask.name();
+      ASSERT_EQ(refined.target(h), reference.target(h)) << mask.name();
+      ASSERT_EQ(refined.face(h), reference.face(h)) << mask.name();
+    }
+    for(auto v : vertices(reference))
+      ASSERT_EQ(refined.halfedge(v), reference.halfedge(v)) << mask.name();
   };
   const Double_mesh triangles = bumpy_grid(true, 40), quads = bumpy_grid(false, 40);
   for(int levels = 1; levels <= 3; ++levels) {

@@ -470,11 +470,20 @@ template <class Host, class P, class VertexPointMap>
 void refine_topology(const Host& host, CGAL::Surface_mesh<P>& mesh, const VertexPointMap&, const Parallel_loop& loop)
 {
   using SM = CGAL::Surface_mesh<P>;
-  const Face_soup soup = host.faces(loop, false);
-  mesh.resize(static_cast<typename SM::size_type>(soup.number_of_vertices()),
-              static_cast<typename SM::size_type>(soup.number_of_edges()),
-              static_cast<typename SM::size_type>(soup.number_of_faces()));
-  wire_surface_mesh(mesh, soup, loop);
+  using size_type = typename SM::size_type;
+  if constexpr(Wires_from_snapshot<Host>::value) { // the edge splits: no soup, as `refine_once` does
+    const std::size_t old_vertices = num_vertices(mesh);
+    const Split_snapshot snapshot = host.snapshot(loop, true);
+    mesh.resize(static_cast<size_type>(host.number_of_new_vertices()),
+                static_cast<size_type>(host.number_of_new_edges()),
+                static_cast<size_type>(host.number_of_new_faces()));
+    wire_split(mesh, host, snapshot, old_vertices, loop);
+  } else {
+    const Face_soup soup = host.faces(loop, false);
+    mesh.resize(static_cast<size_type>(soup.number_of_vertices()), static_cast<size_type>(soup.number_of_edges()),
+                static_cast<size_type>(soup.number_of_faces()));
+    wire_surface_mesh(mesh, soup, loop);
+  }
 }
 
 // One level on `mesh`: returns the level's stencil table (new vertex -> old
