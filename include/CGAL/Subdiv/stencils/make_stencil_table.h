@@ -218,16 +218,14 @@ Row_chunk<FT>*& current_chunk()
  * thread that runs it.
  */
 template <class FT>
-class Chunked_loop
+class Chunked_loop : public Parallel_loop // what it does not redefine runs unchunked: the two passes then
 {
 public:
   Chunked_loop(const Parallel_loop& loop, std::size_t piece, std::size_t room_per_row,
                std::vector<std::unique_ptr<Row_chunk<FT>>>& chunks, Per_thread<Compose_scratch<FT>>& scratches)
-    : m_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_scratches(scratches)
+    : Parallel_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_scratches(scratches)
   {
   }
-  bool is_parallel() const { return m_loop.is_parallel(); }
-  int threads() const { return m_loop.threads(); }
 
   template <class F>
   void for_range(std::size_t n, std::size_t, const F& f) const
@@ -235,7 +233,7 @@ public:
     const std::size_t pieces = (n + m_piece - 1) / m_piece, base = m_chunks.size();
     for(std::size_t p = 0; p < pieces; ++p)
       m_chunks.push_back(std::make_unique<Row_chunk<FT>>());
-    m_loop.for_range(pieces, 1, [&](std::size_t first, std::size_t last) {
+    Parallel_loop::for_range(pieces, 1, [&](std::size_t first, std::size_t last) {
       for(std::size_t p = first; p < last; ++p) {
         Row_chunk<FT>* chunk = m_chunks[base + p].get();
         const std::size_t begin = p * m_piece, end = (std::min)(n, begin + m_piece);
@@ -253,7 +251,6 @@ public:
   }
 
 private:
-  const Parallel_loop& m_loop;
   std::size_t m_piece, m_room_per_row;
   std::vector<std::unique_ptr<Row_chunk<FT>>>& m_chunks;
   Per_thread<Compose_scratch<FT>>& m_scratches;
