@@ -84,14 +84,6 @@ public:
   std::size_t operator()(typename SM::Face_index f) const { return f.idx(); }
 };
 
-// the hot loops of the fast paths (a mask's rule for every element) are
-// compiled as one function, the rule inlined, whatever the size of the caller
-#if defined(__GNUC__) && !defined(__clang__)
-#define CGAL_SUBDIV_FLATTEN __attribute__((flatten))
-#else
-#define CGAL_SUBDIV_FLATTEN
-#endif
-
 /*
  * Calls f(d) for every element d of `range` (the vertices, edges or faces of
  * a mesh, `count` of them): with a dense numbering on index ranges, split into
@@ -131,7 +123,7 @@ void for_each_element_of(const Numbering& number, const MakeRange& make_range, s
     using Descriptor = std::decay_t<decltype(*std::declval<const Range&>().begin())>;
     using Size = decltype(std::declval<Descriptor>().idx());
     (void)number;
-    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) CGAL_SUBDIV_FLATTEN {
+    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) {
       for(std::size_t i = begin; i < end; ++i)
         f(Descriptor(static_cast<Size>(i)));
     });
