@@ -7,7 +7,7 @@
 #   bash src/scripts/quickstart.sh deps   # only install what is missing
 #
 # Options (after the mode):
-#   --with-peers   also install the optional peers (OpenMesh, OpenSubdiv, TBB)
+#   --with-peers   also install the optional peers (OpenMesh, OpenSubdiv)
 #   --jobs N       parallel build and test jobs (default: nproc; or set JOBS=N)
 #
 # The build is an optimised one that keeps CGAL's preconditions and assertions
@@ -15,9 +15,11 @@
 # again only redoes what changed. In test mode the exit code is ctest's.
 set -euo pipefail
 
+# libtbb-dev: optional for users of the library, installed here so that the
+# tests run the multi-threaded paths (threads(n) runs in one thread without it)
 readonly REQUIRED_PACKAGES=(cmake g++ make libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
-                            libgtest-dev libboost-dev python3)
-readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev libtbb-dev)
+                            libgtest-dev libboost-dev libtbb-dev python3)
+readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev)
 
 say() { printf '==> %s\n' "$*"; }
 die() { printf 'quickstart: error: %s\n' "$*" >&2; exit 2; }
