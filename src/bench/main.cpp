@@ -844,7 +844,7 @@ int main(int argc, char** argv)
   }
 
   out("# Performance\n\n"
-      "Written by `subdiv-bench` (src/bench/README.md) in one run; do not edit by hand. Regenerate with\n\n"
+      "Written by `subdiv-bench` (src/bench/README.md) in one run; do not edit by hand. Why the missed targets are missed: doc/profile.md. Regenerate with\n\n"
       "```\ncmake --build build --target subdiv-bench\nbuild/src/subdiv-bench --write-doc\n```\n\n"
       "Conditions of this run:\n\n- date: " + std::string(date) + "\n- command: `" + options.command +
       "`\n- machine: " + trim(file_line("/proc/cpuinfo", "model name")) + ", " +
