@@ -139,16 +139,6 @@ constexpr bool is_double_point_3()
   return std::is_same<typename K::FT, double>::value && std::is_same<typename K::Point_3, Point>::value;
 }
 
-// GCC: the mask's rule inlined into the per-vertex function of the double
-// fast path whatever its size (10-20 % on one thread; doc/profile.md). Only
-// there: on the loops of every scheme, kernel and consumer it made files that
-// instantiate many schemes take minutes to compile.
-#if defined(__GNUC__) && !defined(__clang__)
-#define CGAL_SUBDIV_FLATTEN __attribute__((flatten))
-#else
-#define CGAL_SUBDIV_FLATTEN
-#endif
-
 /// one level: the host numbers the new vertices and makes the new faces, the
 /// mask gives every new vertex its weights
 template <class Mask, class Mesh, class VertexPointMap>
@@ -209,7 +199,7 @@ void compute_points(CGAL::Surface_mesh<P>& mesh, const Host& host, const Mask& m
     std::vector<Point> kept(old_vertices);
     const auto store = [&](std::size_t j, const Point& p) { (j < old_vertices ? kept[j] : out[j]) = p; };
     if constexpr(is_double_point_3<Point>()) {
-      host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) CGAL_SUBDIV_FLATTEN {
+      host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
         Flat_point_sum<Point> sum(out);
         report(sum);
         store(j, sum.point());
@@ -273,7 +263,7 @@ bool refine_beside_resize(CGAL::Surface_mesh<P>& mesh, const Host& host, const M
     loop.invoke(
       [&] {
         snapshot = host.snapshot(inner, true);
-        host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) CGAL_SUBDIV_FLATTEN {
+        host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
           Flat_point_sum<Point> sum(old_points);
           report(sum);
           points[j] = sum.point();
