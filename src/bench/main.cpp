@@ -203,6 +203,41 @@ std::string short_name(const Input& in)
   return name;
 }
 
+// every library's refinement of one case, with ours on two threads (when
+// there) and the Surface_mesh resize floor, timed together (interleaved)
+struct Refinement_times
+{
+  Job_ptr jobs[number_of_peers];
+  Job_ptr ours2, floor;
+  std::vector<double> t; // one per peer, then ours 2T, then the floor
+  double two() const { return t[number_of_peers]; }
+  double resize() const { return t[number_of_peers + 1]; }
+  /// " a | b | ... |": the time of every peer but ours, then of the floor; "-" where missing
+  std::string peer_and_floor_cells() const
+  {
+    std::string cells;
+    for(int p = 1; p < number_of_peers; ++p)
+      cells += " " + (jobs[p] ? seconds(t[static_cast<std::size_t>(p)]) : std::string("-")) + " |";
+    return cells + " " + (floor ? seconds(resize()) : std::string("-")) + " |";
+  }
+};
+
+Refinement_times time_refinement(const Input& in, Scheme scheme, int levels, int runs)
+{
+  Refinement_times r;
+  std::vector<Job*> list;
+  for(int p = 0; p < number_of_peers; ++p) {
+    r.jobs[p] = refinement(static_cast<Peer>(p), in, scheme, levels);
+    list.push_back(r.jobs[p].get());
+  }
+  r.ours2 = ours_has_threads() && ours_with_tbb() ? ours_refinement(in, scheme, levels, 2) : nullptr;
+  r.floor = surface_mesh_resize_floor(in, scheme, levels);
+  list.push_back(r.ours2.get());
+  list.push_back(r.floor.get());
+  r.t = time_jobs(list, runs);
+  return r;
+}
+
 void refinement_section(const Options& options)
 {
   const bool two = ours_has_threads() && ours_with_tbb();
@@ -231,18 +266,11 @@ void refinement_section(const Options& options)
     if(in == nullptr)
       continue;
     for(const int levels : c.levels) {
-      Job_ptr jobs[number_of_peers];
-      std::vector<Job*> list;
-      for(int p = 0; p < number_of_peers; ++p) {
-        jobs[p] = refinement(static_cast<Peer>(p), *in, c.scheme, levels);
-        list.push_back(jobs[p].get());
-      }
-      Job_ptr ours2 = two ? ours_refinement(*in, c.scheme, levels, 2) : nullptr;
-      list.push_back(ours2.get());
-      Job_ptr floor = surface_mesh_resize_floor(*in, c.scheme, levels);
-      list.push_back(floor.get());
-      const std::vector<double> t = time_jobs(list, options.runs);
-      const double t2 = t[number_of_peers], t_floor = t[number_of_peers + 1];
+      const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
+      const auto& jobs = r.jobs;
+      const Job_ptr &ours2 = r.ours2, &floor = r.floor;
+      const std::vector<double>& t = r.t;
+      const double t2 = r.two(), t_floor = r.resize();
       double best = 1e300;
       for(int p = 1; p < number_of_peers; ++p)
         if(jobs[p])
@@ -252,10 +280,7 @@ void refinement_section(const Options& options)
       std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
                         std::to_string(jobs[ours]->output_faces()) + " | " + seconds(t[ours]) + " | " +
                         (ours2 ? seconds(t2) : "-") + " |";
-      for(int p = 1; p < number_of_peers; ++p)
-        row += " " + (jobs[p] ? seconds(t[static_cast<std::size_t>(p)]) : std::string("-")) + " |";
-      row += " " + (floor ? seconds(t_floor) : std::string("-")) + " |";
-      row += " " + fixed(t[ours] / best) + " |";
+      row += r.peer_and_floor_cells() + " " + fixed(t[ours] / best) + " |";
       if(jobs[osd]) {
         const double speedup = t[osd] / t[ours], speedup2 = ours2 ? t[osd] / t2 : nan_value;
         const bool out_of_reach = floor && t_floor > t[osd] / 2;
@@ -334,7 +359,6 @@ const std::vector<Case> fresh_plan = {
 
 void fresh_memory_section(const Options& options)
 {
-  const bool two = ours_has_threads() && ours_with_tbb();
   set_heap(Heap::fresh);
   out("\n## Full refinement in fresh memory\n\n"
       "The largest cases of the next table, run first, with glibc set so that every block of 128 KiB or more is a new `mmap`, unmapped "
@@ -349,24 +373,12 @@ void fresh_memory_section(const Options& options)
     if(in == nullptr)
       continue;
     const int levels = c.levels.front();
-    Job_ptr jobs[number_of_peers];
-    std::vector<Job*> list;
-    for(int p = 0; p < number_of_peers; ++p) {
-      jobs[p] = refinement(static_cast<Peer>(p), *in, c.scheme, levels);
-      list.push_back(jobs[p].get());
-    }
-    Job_ptr ours2 = two ? ours_refinement(*in, c.scheme, levels, 2) : nullptr;
-    Job_ptr floor = surface_mesh_resize_floor(*in, c.scheme, levels);
-    list.push_back(ours2.get());
-    list.push_back(floor.get());
-    const std::vector<double> t = time_jobs(list, options.runs);
+    const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
+    const std::vector<double>& t = r.t;
     std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                      seconds(t[ours]) + " | " + (ours2 ? seconds(t[number_of_peers]) : "-") + " |";
-    for(int p = 1; p < number_of_peers; ++p)
-      row += " " + (jobs[p] ? seconds(t[static_cast<std::size_t>(p)]) : std::string("-")) + " |";
-    row += " " + (floor ? seconds(t[number_of_peers + 1]) : std::string("-")) + " | " +
-           (jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) + " | " +
-           (jobs[osd] && ours2 ? fixed(t[osd] / t[number_of_peers]) : std::string("-")) + " |";
+                      seconds(t[ours]) + " | " + (r.ours2 ? seconds(r.two()) : "-") + " |" +
+                      r.peer_and_floor_cells() + " " + (r.jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) +
+                      " | " + (r.jobs[osd] && r.ours2 ? fixed(t[osd] / r.two()) : std::string("-")) + " |";
     out(row + "\n");
   }
   set_heap(options.heap);
