@@ -84,33 +84,6 @@ Mesh torus(int nu, int nv, bool triangles, int hole = 0)
   return mesh;
 }
 
-// everything of a Surface_mesh, bit for bit: points, and the connectivity
-// (targets, next, prev, faces of halfedges, halfedges of vertices and faces)
-std::vector<std::uint64_t> fingerprint(const Mesh& mesh)
-{
-  std::vector<std::uint64_t> out;
-  const auto bits = [](double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  };
-  for(const V v : mesh.vertices()) {
-    out.push_back(bits(mesh.point(v).x()));
-    out.push_back(bits(mesh.point(v).y()));
-    out.push_back(bits(mesh.point(v).z()));
-    out.push_back(mesh.halfedge(v));
-  }
-  for(const auto h : mesh.halfedges()) {
-    out.push_back(mesh.target(h));
-    out.push_back(mesh.next(h));
-    out.push_back(mesh.prev(h));
-    out.push_back(mesh.face(h));
-  }
-  for(const auto f : mesh.faces())
-    out.push_back(mesh.halfedge(f));
-  return out;
-}
-
 // the connectivity only (targets, next, prev, faces of halfedges, halfedges
 // of vertices and faces)
 std::vector<std::uint64_t> connectivity(const Mesh& mesh)
@@ -126,6 +99,25 @@ std::vector<std::uint64_t> connectivity(const Mesh& mesh)
   }
   for(const auto f : mesh.faces())
     out.push_back(mesh.halfedge(f));
+  return out;
+}
+
+// everything of a Surface_mesh, bit for bit: the points, then the connectivity
+std::vector<std::uint64_t> fingerprint(const Mesh& mesh)
+{
+  std::vector<std::uint64_t> out;
+  const auto bits = [](double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  for(const V v : mesh.vertices()) {
+    out.push_back(bits(mesh.point(v).x()));
+    out.push_back(bits(mesh.point(v).y()));
+    out.push_back(bits(mesh.point(v).z()));
+  }
+  const std::vector<std::uint64_t> links = connectivity(mesh);
+  out.insert(out.end(), links.begin(), links.end());
   return out;
 }
 

@@ -112,6 +112,17 @@ SM grid(int n, int m, bool triangles)
 
 double distance(const K::Point_3& a, const K::Point_3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
 
+// the largest distance between the points of the first `count` vertices of two meshes
+double largest_distance(const Mesh& a, const Mesh& b, std::size_t count)
+{
+  double worst = 0;
+  for(std::size_t i = 0; i < count; ++i) {
+    const V v(static_cast<Mesh::size_type>(i));
+    worst = (std::max)(worst, distance(a.point(v), b.point(v)));
+  }
+  return worst;
+}
+
 std::vector<K::Point_3> points_of(const Mesh& mesh)
 {
   return std::vector<K::Point_3>(mesh.points().begin(), mesh.points().end());
@@ -199,9 +210,7 @@ TEST(ProjectToLimit, loop_agrees_with_deep_refinement)
   Mesh deep = mesh;
   for(int L = 1; L <= 6; ++L) {
     SD::loop_subdivision(deep, CGAL::parameters::number_of_iterations(1));
-    double worst = 0;
-    for(std::size_t i = 0; i < old; ++i)
-      worst = (std::max)(worst, distance(deep.point(V(static_cast<Mesh::size_type>(i))), limit.point(V(static_cast<Mesh::size_type>(i)))));
+    const double worst = largest_distance(deep, limit, old);
     EXPECT_LE(worst, 2 * edge * std::pow(0.5, L)) << "L = " << L;
     if(L == 6)
       EXPECT_GT(worst, 0.0);
@@ -220,9 +229,7 @@ TEST(ProjectToLimit, catmull_clark_agrees_with_deep_refinement)
   const double c = std::cos(2 * pi / 3), lambda = (std::max)(0.5, (5 + c + std::cos(pi / 3) * std::sqrt(18 + 2 * c)) / 16);
   for(int L = 1; L <= 5; ++L) {
     SD::catmull_clark_subdivision(deep, CGAL::parameters::number_of_iterations(1));
-    double worst = 0;
-    for(std::size_t i = 0; i < old; ++i)
-      worst = (std::max)(worst, distance(deep.point(V(static_cast<Mesh::size_type>(i))), limit.point(V(static_cast<Mesh::size_type>(i)))));
+    const double worst = largest_distance(deep, limit, old);
     EXPECT_LE(worst, std::pow(lambda, L)) << "L = " << L; // the cube's level-1 edges are 1/2 long
   }
 }
