@@ -6,8 +6,8 @@
 // (pinned classes and Holder bounds), level measurements and limit tracking
 // on real polylines.
 
-#include <CGAL/Subdiv/analysis/curve_analysis.h>
 #include <CGAL/Subdiv.h>
+#include <CGAL/Subdiv/analysis/curve_analysis.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -32,7 +32,10 @@ using Kd = CGAL::Simple_cartesian<double>;
 using Point_2 = Kd::Point_2;
 using Point_3 = Kd::Point_3;
 
-Q q(int n, int d) { return Q(n) / Q(d); }
+Q q(int n, int d)
+{
+  return Q(n) / Q(d);
+}
 
 template <class FT>
 using Matrix = Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>;
@@ -234,9 +237,8 @@ TEST(Curve_analysis, chaikin)
   const auto r = S::analyse_curve_scheme(S::Chaikin_scheme<Q>());
   EXPECT_EQ(r.window_first, -1);
   EXPECT_EQ(r.window_last, 1);
-  EXPECT_TRUE(same_matrix(r.matrix, rational_matrix({{q(1, 4), q(3, 4), Q(0)},
-                                                     {Q(0), q(3, 4), q(1, 4)},
-                                                     {Q(0), q(1, 4), q(3, 4)}})));
+  EXPECT_TRUE(same_matrix(
+    r.matrix, rational_matrix({{q(1, 4), q(3, 4), Q(0)}, {Q(0), q(3, 4), q(1, 4)}, {Q(0), q(1, 4), q(3, 4)}})));
   expect_real_eigenvalues(r.eigenvalues, {1, 0.5, 0.25}, "Chaikin");
   // the limit of Q_i is the midpoint of p_i and p_i+1 (a knot of the quadratic B-spline)
   EXPECT_EQ(r.limit_mask, (std::vector<Q>{Q(0), q(1, 2), q(1, 2)}));
@@ -249,12 +251,11 @@ TEST(Curve_analysis, chaikin)
 TEST(Curve_analysis, bsplines_of_degree_1_to_5)
 {
   // limit masks: the B-spline of degree k at its knots, exactly
-  const std::vector<std::vector<Q>> masks = {
-    {Q(0), Q(1), Q(0)},
-    {Q(0), q(1, 2), q(1, 2)},
-    {q(1, 6), q(2, 3), q(1, 6)},
-    {q(1, 24), q(11, 24), q(11, 24), q(1, 24)},
-    {q(1, 120), q(26, 120), q(66, 120), q(26, 120), q(1, 120)}};
+  const std::vector<std::vector<Q>> masks = {{Q(0), Q(1), Q(0)},
+                                             {Q(0), q(1, 2), q(1, 2)},
+                                             {q(1, 6), q(2, 3), q(1, 6)},
+                                             {q(1, 24), q(11, 24), q(11, 24), q(1, 24)},
+                                             {q(1, 120), q(26, 120), q(66, 120), q(26, 120), q(1, 120)}};
   const int first[] = {-1, -1, -1, -1, -2};
   for(int k = 1; k <= 5; ++k) {
     const auto r = S::analyse_curve_scheme(S::Uniform_bspline_scheme<Q>(k));
@@ -324,14 +325,15 @@ TEST(Curve_analysis, four_point_smoothness_table)
   // Dyn, Gregory and Levin proved C1 for 0 < w < (sqrt 5 - 1)/8 = 0.154; the
   // exact C1 range is larger (up to w = 0.1927, Hechler, Moessner, Reif 2009):
   // here C1 is proven at w = 0.16 too, and not at 0.2 or 0.24.
-  struct Row {
+  struct Row
+  {
     Q w;
     int smoothness;
     double holder;
   };
-  const Row table[] = {{Q(0), 0, 1.0},           {q(1, 32), 1, 1.21147},  {q(1, 16), 1, 1.74453},
-                       {q(1, 10), 1, 1.56240},   {q(1, 8), 1, 1.36495},   {q(3, 20), 1, 1.19891},
-                       {q(4, 25), 1, 1.14005},   {q(1, 5), 0, 0.856933},  {q(6, 25), 0, 0.754434}};
+  const Row table[] = {{Q(0), 0, 1.0},         {q(1, 32), 1, 1.21147}, {q(1, 16), 1, 1.74453},
+                       {q(1, 10), 1, 1.56240}, {q(1, 8), 1, 1.36495},  {q(3, 20), 1, 1.19891},
+                       {q(4, 25), 1, 1.14005}, {q(1, 5), 0, 0.856933}, {q(6, 25), 0, 0.754434}};
   for(const Row& row : table) {
     const auto r = S::analyse_curve_scheme(S::Four_point_scheme<Q>(row.w));
     EXPECT_TRUE(r.converges) << row.w;
@@ -360,9 +362,8 @@ TEST(Curve_analysis, corner_cutting_grid)
       const Q a = q(i, 10), b = q(j, 10);
       const auto r = S::analyse_curve_scheme(S::Corner_cutting_scheme<Q>(a, b));
       const std::string what = "a = " + std::to_string(i) + "/10, b = " + std::to_string(j) + "/10";
-      EXPECT_TRUE(same_matrix(r.matrix, rational_matrix({{Q(1) - b, b, Q(0)},
-                                                         {Q(0), Q(1) - a, a},
-                                                         {Q(0), Q(1) - b, b}})))
+      EXPECT_TRUE(
+        same_matrix(r.matrix, rational_matrix({{Q(1) - b, b, Q(0)}, {Q(0), Q(1) - a, a}, {Q(0), Q(1) - b, b}})))
         << what;
       // eigenvalues 1, b - a, 1 - b
       std::vector<double> expected = {CGAL::to_double(Q(b - a)), CGAL::to_double(Q(Q(1) - b))};

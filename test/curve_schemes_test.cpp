@@ -82,12 +82,11 @@ std::string describe(const Stencil& s)
 
 template <class K>
 class Curve_schemes : public ::testing::Test
-{
-};
+{};
 
-using Kernels = ::testing::Types<CGAL::Simple_cartesian<double>, CGAL::Exact_predicates_inexact_constructions_kernel,
-                                 CGAL::Exact_predicates_exact_constructions_kernel,
-                                 CGAL::Simple_cartesian<CGAL::Exact_rational>>;
+using Kernels =
+  ::testing::Types<CGAL::Simple_cartesian<double>, CGAL::Exact_predicates_inexact_constructions_kernel,
+                   CGAL::Exact_predicates_exact_constructions_kernel, CGAL::Simple_cartesian<CGAL::Exact_rational>>;
 TYPED_TEST_SUITE(Curve_schemes, Kernels);
 
 } // namespace
@@ -186,8 +185,7 @@ TYPED_TEST(Curve_schemes, cubic_bspline_closed_form_rules)
   using FT = typename TypeParam::FT;
   using P = typename TypeParam::Point_2;
   const auto points = star<TypeParam>();
-  const auto refined =
-    S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(3), S::Polyline_options().closed(true));
+  const auto refined = S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(3), S::Polyline_options().closed(true));
   ASSERT_EQ(refined.size(), 2 * points.size());
   const std::size_t n = points.size();
   for(std::size_t i = 0; i < n; ++i) {
@@ -245,8 +243,8 @@ TYPED_TEST(Curve_schemes, open_end_rules)
 
   // keep_ends: every scheme keeps the two end points
   const auto keeps_ends = [&](const auto& scheme) {
-    const auto refined =
-      S::refine_polyline(points, scheme, S::Polyline_options().number_of_iterations(3).end_rule(S::End_rule::keep_ends));
+    const auto refined = S::refine_polyline(
+      points, scheme, S::Polyline_options().number_of_iterations(3).end_rule(S::End_rule::keep_ends));
     EXPECT_TRUE(same_point(refined.front(), points.front())) << scheme.name();
     EXPECT_TRUE(same_point(refined.back(), points.back())) << scheme.name();
   };
@@ -374,9 +372,11 @@ TYPED_TEST(Curve_schemes, bad_input_is_refused_with_a_clear_message)
   const S::Chaikin_scheme<FT> chaikin;
   EXPECT_TRUE(contains(message([&] { S::refine_polyline(std::vector<P>(), chaikin); }), "empty"));
   EXPECT_TRUE(contains(message([&] { S::refine_polyline(std::vector<P>{P(0, 0)}, chaikin); }), "at least 2"));
-  EXPECT_TRUE(contains(
-    message([&] { S::refine_polyline(std::vector<P>{P(0, 0), P(1, 1)}, chaikin, S::Polyline_options().closed(true)); }),
-    "at least 3"));
+  EXPECT_TRUE(
+    contains(message([&] {
+               S::refine_polyline(std::vector<P>{P(0, 0), P(1, 1)}, chaikin, S::Polyline_options().closed(true));
+             }),
+             "at least 3"));
   EXPECT_TRUE(contains(message([&] {
                          S::refine_polyline(std::vector<P>{P(0, 0), P(1, 0), P(2, 0)}, S::Four_point_scheme<FT>());
                        }),
@@ -386,25 +386,27 @@ TYPED_TEST(Curve_schemes, bad_input_is_refused_with_a_clear_message)
                                             S::Polyline_options().end_rule(S::End_rule::keep_ends));
                        }),
                        "too short"));
-  EXPECT_TRUE(
-    contains(message([&] { S::refine_polyline(points, chaikin, S::Polyline_options().number_of_iterations(-1)); }),
-             "negative"));
+  EXPECT_TRUE(contains(
+    message([&] { S::refine_polyline(points, chaikin, S::Polyline_options().number_of_iterations(-1)); }), "negative"));
   EXPECT_TRUE(
     contains(message([&] { S::refine_polyline(points, chaikin, S::Polyline_options().number_of_iterations(40)); }),
              "max_output_points"));
-  EXPECT_TRUE(contains(message([&] { S::Corner_cutting_scheme<FT>(frac<FT>(3, 4), frac<FT>(1, 4)); }), "0 < a < b < 1"));
+  EXPECT_TRUE(
+    contains(message([&] { S::Corner_cutting_scheme<FT>(frac<FT>(3, 4), frac<FT>(1, 4)); }), "0 < a < b < 1"));
   EXPECT_TRUE(contains(message([&] { S::Corner_cutting_scheme<FT>(FT(0), frac<FT>(1, 4)); }), "0 < a < b < 1"));
   EXPECT_TRUE(contains(message([&] { S::Four_point_scheme<FT>(frac<FT>(1, 4)); }), "tension"));
   EXPECT_TRUE(contains(message([&] { S::Four_point_scheme<FT>(frac<FT>(-1, 16)); }), "tension"));
   EXPECT_TRUE(contains(message([&] { S::Uniform_bspline_scheme<FT>(0); }), "degree"));
   EXPECT_TRUE(contains(message([&] { S::Bezier_scheme<FT>(0); }), "degree"));
   EXPECT_TRUE(contains(message([&] { S::bezier_subdivision(points, 3); }), "m d + 1"));
-  EXPECT_TRUE(contains(message([&] { S::bezier_subdivision(std::vector<P>(points.begin(), points.begin() + 7), 3, S::Bezier_options().closed(true)); }),
-                       "multiple of d"));
   EXPECT_TRUE(contains(message([&] {
-                         S::bezier_subdivision_to_tolerance(std::vector<P>(points.begin(), points.begin() + 4), 3, FT(0));
+                         S::bezier_subdivision(std::vector<P>(points.begin(), points.begin() + 7), 3,
+                                               S::Bezier_options().closed(true));
                        }),
-                       "tolerance"));
+                       "multiple of d"));
+  EXPECT_TRUE(contains(
+    message([&] { S::bezier_subdivision_to_tolerance(std::vector<P>(points.begin(), points.begin() + 4), 3, FT(0)); }),
+    "tolerance"));
   if constexpr(!is_exact<FT>()) {
     std::vector<P> broken = points;
     broken[5] = P(std::numeric_limits<double>::quiet_NaN(), 0);

@@ -32,8 +32,8 @@ inline bool have_shared_data()
   return std::ifstream(shared_mesh("SOURCES.md")).good();
 }
 
-#define SUBDIV_REQUIRE_SHARED_DATA()                                                                                \
-  if(!testing_utils::have_shared_data())                                                                           \
+#define SUBDIV_REQUIRE_SHARED_DATA()     \
+  if(!testing_utils::have_shared_data()) \
   GTEST_SKIP() << "../shared/data is not beside the checkout"
 
 template <class Mesh>
@@ -86,7 +86,8 @@ double position_mismatch(const MeshA& a, const MeshB& b)
 template <class Mesh>
 bool read_obj_positions(const std::string& path, Mesh& mesh)
 {
-  using Point = typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type;
+  using Point =
+    typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type;
   std::ifstream in(path);
   if(!in)
     return false;

@@ -12,10 +12,10 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
-#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -39,9 +39,8 @@ Mesh torus(int nu, int nv, bool triangles, int hole = 0)
   for(int i = 0; i < nu; ++i)
     for(int j = 0; j < nv; ++j) {
       const double u = 2 * pi * (i + jitter(random)) / nu, w = 2 * pi * (j + jitter(random)) / nv;
-      v[static_cast<std::size_t>(i * nv + j)] =
-        mesh.add_vertex(Point((1 + 0.4 * std::cos(w)) * std::cos(u), (1 + 0.4 * std::cos(w)) * std::sin(u),
-                              0.4 * std::sin(w)));
+      v[static_cast<std::size_t>(i * nv + j)] = mesh.add_vertex(
+        Point((1 + 0.4 * std::cos(w)) * std::cos(u), (1 + 0.4 * std::cos(w)) * std::sin(u), 0.4 * std::sin(w)));
     }
   const auto at = [&](int i, int j) { return v[static_cast<std::size_t>((i % nu) * nv + (j % nv))]; };
   std::bernoulli_distribution coin(0.5);
@@ -159,9 +158,12 @@ TEST(Parallel, catmull_clark_is_the_same_with_any_number_of_threads)
 TEST(Parallel, other_schemes_are_the_same_with_any_number_of_threads)
 {
   const Mesh triangles = torus(30, 30, true, 11), quads = torus(30, 30, false, 11);
-  expect_same_with_any_thread_count(triangles, [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, 3);
-  expect_same_with_any_thread_count(triangles, [](Mesh& m, const auto& np) { S::modified_butterfly_subdivision(m, np); }, 2);
-  expect_same_with_any_thread_count(quads, [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, 2);
+  expect_same_with_any_thread_count(
+    triangles, [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, 3);
+  expect_same_with_any_thread_count(
+    triangles, [](Mesh& m, const auto& np) { S::modified_butterfly_subdivision(m, np); }, 2);
+  expect_same_with_any_thread_count(
+    quads, [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, 2);
 }
 
 TEST(Parallel, edge_splits_beside_the_resize_are_the_same_with_any_number_of_threads)

@@ -97,9 +97,9 @@ TEST(Stencil_table, re_evaluates_moved_control_points_and_other_data)
 TEST(Stencil_table, refuses_what_subdivide_refuses_and_mismatched_inputs)
 {
   Mesh empty;
-  EXPECT_NE(testing_utils::bad_input_message([&] { S::make_stencil_table(empty, S::Loop_mask<Mesh>(), 1); })
-              .find("empty"),
-            std::string::npos);
+  EXPECT_NE(
+    testing_utils::bad_input_message([&] { S::make_stencil_table(empty, S::Loop_mask<Mesh>(), 1); }).find("empty"),
+    std::string::npos);
   const auto table = S::make_stencil_table(open_bipyramid_piece(), S::Loop_mask<Mesh>(), 1);
   std::vector<KE::Point_3> too_few(3), out;
   EXPECT_NE(testing_utils::bad_input_message([&] { table.apply(too_few, out); }).find("needs 6 source values"),
@@ -123,10 +123,14 @@ TEST(Stencil_table, every_host_composes_exactly_what_subdivide_makes)
     EXPECT_EQ(fine, points_of(reference)) << mask.name() << ", " << levels << " levels";
   };
   for(int levels = 0; levels <= 3; ++levels) {
-    check(S::Sqrt3_mask<Mesh>(), [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, levels);
-    check(S::Catmull_clark_mask<Mesh>(), [](Mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); }, levels);
-    check(S::Doo_sabin_mask<Mesh>(), [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, levels);
-    check(S::Butterfly_mask<Mesh>(), [](Mesh& m, const auto& np) { S::butterfly_subdivision(m, np); }, levels);
+    check(
+      S::Sqrt3_mask<Mesh>(), [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, levels);
+    check(
+      S::Catmull_clark_mask<Mesh>(), [](Mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); }, levels);
+    check(
+      S::Doo_sabin_mask<Mesh>(), [](Mesh& m, const auto& np) { S::doo_sabin_subdivision(m, np); }, levels);
+    check(
+      S::Butterfly_mask<Mesh>(), [](Mesh& m, const auto& np) { S::butterfly_subdivision(m, np); }, levels);
   }
 }
 

@@ -275,9 +275,7 @@ TEST(Butterfly_family, a_planar_mesh_stays_planar_exactly)
 {
   // the plane z = (x + 2y)/3 + 1/7, vertices moved inside it off the lattice
   Rationals r;
-  const auto on_plane = [](const FT& x, const FT& y) -> P {
-    return P(x, y, (x + FT(2) * y) / FT(3) + FT(1) / FT(7));
-  };
+  const auto on_plane = [](const FT& x, const FT& y) -> P { return P(x, y, (x + FT(2) * y) / FT(3) + FT(1) / FT(7)); };
   const std::vector<EMesh> meshes = {
     grid(5, 4, [&](int i, int j) { return on_plane(FT(i) + r() / FT(4), FT(j) + r() / FT(4)); }).mesh,
     fan(
@@ -298,7 +296,7 @@ TEST(Butterfly_family, a_planar_mesh_stays_planar_exactly)
 TEST(Butterfly_family, subdivision_commutes_with_affine_maps_exactly)
 {
   // valence 7 has irrational modified butterfly weights: their sum is still exactly 1
-  const KE::Aff_transformation_3 t(FT(2), FT(1) / FT(3), FT(-1), FT(5), //
+  const KE::Aff_transformation_3 t(FT(2), FT(1) / FT(3), FT(-1), FT(5),         //
                                    FT(0), FT(3) / FT(2), FT(1) / FT(5), FT(-2), //
                                    FT(1), FT(1), FT(1) / FT(7), FT(1) / FT(9));
   const std::vector<EMesh> meshes = {bipyramid(7), fan(5), random_height_grid(4, 3).mesh, bipyramid(4)};
@@ -364,7 +362,7 @@ TEST(Modified_butterfly, extraordinary_weights_are_the_papers)
   EXPECT_EQ(four.centre, FT(3) / FT(4));
   // valence 6 (the formula; the mask uses the butterfly there): rational
   EXPECT_EQ(six.ring, (std::vector<FT>{FT(7) / FT(24), FT(1) / FT(12), FT(-1) / FT(12), FT(-1) / FT(24),
-                                      FT(-1) / FT(12), FT(1) / FT(12)}));
+                                       FT(-1) / FT(12), FT(1) / FT(12)}));
   EXPECT_EQ(six.centre, FT(3) / FT(4));
   for(int k : {3, 4, 6})
     EXPECT_TRUE(W::is_exact(k)) << k;
@@ -459,9 +457,8 @@ TEST(Butterfly_family, every_border_loop_is_refined_by_the_four_point_curve_sche
   const auto check = [&](const auto& mask, const FT& w) {
     EMesh mesh = g.mesh;
     S::subdivide(mesh, mask, CGAL::parameters::number_of_iterations(2));
-    const std::vector<P> expected =
-      S::refine_polyline(border_loop(g.mesh, V(0)), S::Four_point_scheme<FT>(w),
-                         S::Polyline_options().closed(true).number_of_iterations(2));
+    const std::vector<P> expected = S::refine_polyline(border_loop(g.mesh, V(0)), S::Four_point_scheme<FT>(w),
+                                                       S::Polyline_options().closed(true).number_of_iterations(2));
     EXPECT_EQ(border_loop(mesh, V(0)), expected) << mask.name() << ", w = " << w;
   };
   check(S::Butterfly_mask<EMesh>(), FT(1) / FT(16));
@@ -564,8 +561,8 @@ TEST(Butterfly_family, surface_mesh_polyhedron_and_epeck_agree)
 TEST(Butterfly_family, meshes_with_borders_run_two_levels_and_stay_valid)
 {
   SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/corner_tris_with_hole.off",
-                                "cgal/patch-23.off", "cgal/elephant.off"})
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off",
+                                "cgal/corner_tris_with_hole.off", "cgal/patch-23.off", "cgal/elephant.off"})
     for(int scheme = 0; scheme < 3; ++scheme) {
       Mesh mesh;
       ASSERT_TRUE(read_shared(name, mesh)) << name;

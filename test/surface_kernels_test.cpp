@@ -31,7 +31,8 @@ template <class P>
   if constexpr(is_exact<FT>()) {
     if(a == b)
       return ::testing::AssertionSuccess();
-  } else if(CGAL::to_double(CGAL::squared_distance(a, b)) <= 1e-24 * (1 + CGAL::to_double((a - CGAL::ORIGIN).squared_length()))) {
+  } else if(CGAL::to_double(CGAL::squared_distance(a, b)) <=
+            1e-24 * (1 + CGAL::to_double((a - CGAL::ORIGIN).squared_length()))) {
     return ::testing::AssertionSuccess();
   }
   return ::testing::AssertionFailure() << a << " != " << b;
@@ -89,11 +90,10 @@ struct Meshes
 
 template <class K>
 class Surface_kernels : public ::testing::Test
-{
-};
-using Kernels = ::testing::Types<CGAL::Simple_cartesian<double>, CGAL::Exact_predicates_inexact_constructions_kernel,
-                                 CGAL::Exact_predicates_exact_constructions_kernel,
-                                 CGAL::Simple_cartesian<CGAL::Exact_rational>>;
+{};
+using Kernels =
+  ::testing::Types<CGAL::Simple_cartesian<double>, CGAL::Exact_predicates_inexact_constructions_kernel,
+                   CGAL::Exact_predicates_exact_constructions_kernel, CGAL::Simple_cartesian<CGAL::Exact_rational>>;
 TYPED_TEST_SUITE(Surface_kernels, Kernels);
 
 // the checks every scheme must pass on `mesh`

@@ -73,14 +73,14 @@ SM cube()
 Mesh icosahedron()
 {
   const double t = (1 + std::sqrt(5.0)) / 2, s = 1 / std::sqrt(1 + t * t);
-  std::vector<std::array<double, 3>> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                          {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<double, 3>> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                          {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for(auto& q : p)
     for(double& c : q)
       c *= s;
-  return mesh_of<Mesh>(p, {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  return mesh_of<Mesh>(p, {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                           {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
+                           {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
 }
 
 // an n x m grid in the plane z = 0, counter-clockwise seen from +z; triangles
@@ -110,7 +110,10 @@ SM grid(int n, int m, bool triangles)
   return mesh_of<SM>(points, faces);
 }
 
-double distance(const K::Point_3& a, const K::Point_3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+double distance(const K::Point_3& a, const K::Point_3& b)
+{
+  return std::sqrt(CGAL::squared_distance(a, b));
+}
 
 // the largest distance between the points of the first `count` vertices of two meshes
 double largest_distance(const Mesh& a, const Mesh& b, std::size_t count)
@@ -128,7 +131,8 @@ std::vector<K::Point_3> points_of(const Mesh& mesh)
   return std::vector<K::Point_3>(mesh.points().begin(), mesh.points().end());
 }
 
-std::vector<K::Vector_3> normals_of(const Mesh& mesh, const std::function<void(const Mesh&, Mesh::Property_map<V, K::Vector_3>)>& compute)
+std::vector<K::Vector_3> normals_of(const Mesh& mesh,
+                                    const std::function<void(const Mesh&, Mesh::Property_map<V, K::Vector_3>)>& compute)
 {
   Mesh copy = mesh;
   auto map = copy.add_property_map<V, K::Vector_3>("v:n", K::Vector_3(0, 0, 0)).first;
@@ -226,7 +230,8 @@ TEST(ProjectToLimit, catmull_clark_agrees_with_deep_refinement)
   const std::size_t old = mesh.number_of_vertices();
   Mesh deep = mesh;
   // valence 3: lambda_1 = (5 + c + cos(pi/3) sqrt(18 + 2c)) / 16 with c = cos(2 pi / 3)
-  const double c = std::cos(2 * pi / 3), lambda = (std::max)(0.5, (5 + c + std::cos(pi / 3) * std::sqrt(18 + 2 * c)) / 16);
+  const double c = std::cos(2 * pi / 3),
+               lambda = (std::max)(0.5, (5 + c + std::cos(pi / 3) * std::sqrt(18 + 2 * c)) / 16);
   for(int L = 1; L <= 5; ++L) {
     SD::catmull_clark_subdivision(deep, CGAL::parameters::number_of_iterations(1));
     const double worst = largest_distance(deep, limit, old);
@@ -253,20 +258,16 @@ void expect_invariant_under_refinement(Exact_mesh mesh, const Refine& refine)
 
 TEST(ProjectToLimit, exactly_invariant_under_refinement)
 {
-  expect_invariant_under_refinement<Warren_loop>(tetrahedron<Exact_mesh>(), [](Exact_mesh& m) {
-    SD::loop_warren_subdivision(m);
-  });
-  expect_invariant_under_refinement<SD::Catmull_clark_mask>(cube<Exact_mesh>(), [](Exact_mesh& m) {
-    SD::catmull_clark_subdivision(m);
-  });
+  expect_invariant_under_refinement<Warren_loop>(tetrahedron<Exact_mesh>(),
+                                                 [](Exact_mesh& m) { SD::loop_warren_subdivision(m); });
+  expect_invariant_under_refinement<SD::Catmull_clark_mask>(cube<Exact_mesh>(),
+                                                            [](Exact_mesh& m) { SD::catmull_clark_subdivision(m); });
   // Loop's 1987 beta: rational at 3, 4, 6 (the tetrahedron and its refinements)
-  expect_invariant_under_refinement<SD::Loop_mask>(tetrahedron<Exact_mesh>(), [](Exact_mesh& m) {
-    SD::loop_subdivision(m);
-  });
+  expect_invariant_under_refinement<SD::Loop_mask>(tetrahedron<Exact_mesh>(),
+                                                   [](Exact_mesh& m) { SD::loop_subdivision(m); });
   // borders: a quad grid (border vertices with 1 and 2 faces)
-  expect_invariant_under_refinement<SD::Catmull_clark_mask>(grid<Exact_mesh>(2, 1, false), [](Exact_mesh& m) {
-    SD::catmull_clark_subdivision(m);
-  });
+  expect_invariant_under_refinement<SD::Catmull_clark_mask>(grid<Exact_mesh>(2, 1, false),
+                                                            [](Exact_mesh& m) { SD::catmull_clark_subdivision(m); });
 }
 
 // border vertices: the border is the cubic B-spline of the border polygon, so
@@ -291,9 +292,8 @@ TEST(ProjectToLimit, border_vertices_are_on_the_cubic_bspline)
     const auto& prev = mesh.point(mesh.source(walk.first));
     const auto& next = mesh.point(mesh.target(walk.second));
     const auto& p = mesh.point(v);
-    const QK::Point_3 expected(
-      (prev.x() + Q(4) * p.x() + next.x()) / Q(6), (prev.y() + Q(4) * p.y() + next.y()) / Q(6),
-      (prev.z() + Q(4) * p.z() + next.z()) / Q(6));
+    const QK::Point_3 expected((prev.x() + Q(4) * p.x() + next.x()) / Q(6), (prev.y() + Q(4) * p.y() + next.y()) / Q(6),
+                               (prev.z() + Q(4) * p.z() + next.z()) / Q(6));
     EXPECT_EQ(limit.point(v), expected) << "vertex " << v.idx();
   }
   EXPECT_EQ(border, 20);
@@ -430,8 +430,8 @@ TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
       mesh.clear();
       std::vector<EV> v;
       for(EV u : other.vertices())
-        v.push_back(mesh.add_vertex(QK::Point_3(other.point(u).x(), other.point(u).y(),
-                                                Q(int((u.idx() * 7) % 5)) / Q(4))));
+        v.push_back(
+          mesh.add_vertex(QK::Point_3(other.point(u).x(), other.point(u).y(), Q(int((u.idx() * 7) % 5)) / Q(4))));
       for(auto f : other.faces()) {
         std::vector<EV> corners;
         for(EV u : CGAL::vertices_around_face(other.halfedge(f), other))
@@ -502,9 +502,9 @@ TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
       };
       const double first = spread(level);
       ASSERT_GT(first, 0.0);
-      EXPECT_EQ(CGAL::vertices_around_face(level.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(index))), level)
-                  .size(),
-                static_cast<std::size_t>(faces));
+      EXPECT_EQ(
+        CGAL::vertices_around_face(level.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(index))), level).size(),
+        static_cast<std::size_t>(faces));
       SD::doo_sabin_subdivision(level, CGAL::parameters::number_of_iterations(6));
       const double last = spread(level);
       EXPECT_LE(last, first * (border ? 0.25 : 0.03)); // 0.75^6 = 0.18 (2/3 for a triangle), 0.5^6 = 0.016
@@ -635,7 +635,8 @@ TEST(LimitNormals, parallel_tangents_fall_back_to_face_normals)
     mesh.point(u) = mesh.point(centre) + d * (offset.x() + 0.3 * offset.y());
   }
   const auto evaluator = SD::make_limit_evaluator<SD::Loop_mask>();
-  const auto results = evaluator.evaluate(mesh, mesh.points(), static_cast<const SD::internal::No_heights*>(nullptr), "test");
+  const auto results =
+    evaluator.evaluate(mesh, mesh.points(), static_cast<const SD::internal::No_heights*>(nullptr), "test");
   const auto& r = results[centre.idx()];
   ASSERT_TRUE(r.tangents);
   const auto n = SD::internal::cross(r.tangent[0], r.tangent[1]);
@@ -669,8 +670,8 @@ TEST(Displace, zero_height_is_the_limit_surface)
 {
   Mesh mesh = icosahedron();
   Mesh displaced = mesh, limit = mesh;
-  SD::Limit_evaluator<SD::Loop_mask>().displace(displaced, [](const K::Point_3&) { return 0.0; },
-                                                 CGAL::parameters::number_of_iterations(2));
+  SD::Limit_evaluator<SD::Loop_mask>().displace(
+    displaced, [](const K::Point_3&) { return 0.0; }, CGAL::parameters::number_of_iterations(2));
   SD::loop_subdivision(limit, CGAL::parameters::number_of_iterations(2));
   SD::project_to_limit<SD::Loop_mask>(limit);
   EXPECT_EQ(points_of(displaced), points_of(limit));
@@ -701,7 +702,9 @@ TEST(Displace, constant_height_moves_along_the_unit_normal)
 TEST(Displace, carried_heights_reproduce_a_linear_function)
 {
   Exact_mesh mesh = tetrahedron<Exact_mesh>();
-  const auto linear = [](const QK::Point_3& p) -> Q { return Q(2) * p.x() - Q(3) * p.y() + p.z() / Q(5) + Q(1) / Q(7); };
+  const auto linear = [](const QK::Point_3& p) -> Q {
+    return Q(2) * p.x() - Q(3) * p.y() + p.z() / Q(5) + Q(1) / Q(7);
+  };
   auto heights = mesh.add_property_map<Exact_mesh::Vertex_index, Q>("v:height", Q(0)).first;
   for(auto v : mesh.vertices())
     heights[v] = linear(mesh.point(v));
@@ -769,8 +772,9 @@ TEST(ProjectToLimit, epeck)
 TEST(LimitErrors, refusals_name_the_problem)
 {
   Mesh quads = cube();
-  EXPECT_NE(testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Loop_mask>(quads); })
-              .find("needs a mesh whose faces all have 3 vertices"),
+  EXPECT_NE(testing_utils::bad_input_message([&] {
+              SD::project_to_limit<SD::Loop_mask>(quads);
+            }).find("needs a mesh whose faces all have 3 vertices"),
             std::string::npos);
   // Doo-Sabin at an interior vertex of valence 2 (two quads glued along their border): no vertex face
   Mesh pillow = mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}});

@@ -148,12 +148,17 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
 TEST(Loop, matches_opensubdiv_reference_results)
 {
   SUBDIV_REQUIRE_SHARED_DATA();
-  struct Case { std::string shape; S::Border_corners corners; };
+  struct Case
+  {
+    std::string shape;
+    S::Border_corners corners;
+  };
   // loop_cube and loop_icosahedron are closed; the two *_edgecorner shapes use
   // OpenSubdiv's "edges and corners" boundary rule: Border_corners::sharp
-  for(const Case& c : {Case{"loop_cube", S::Border_corners::smooth}, Case{"loop_icosahedron", S::Border_corners::smooth},
-                       Case{"loop_saddle_edgecorner", S::Border_corners::sharp},
-                       Case{"loop_triangle_edgecorner", S::Border_corners::sharp}}) {
+  for(const Case& c :
+      {Case{"loop_cube", S::Border_corners::smooth}, Case{"loop_icosahedron", S::Border_corners::smooth},
+       Case{"loop_saddle_edgecorner", S::Border_corners::sharp},
+       Case{"loop_triangle_edgecorner", S::Border_corners::sharp}}) {
     Mesh mesh;
     ASSERT_TRUE(testing_utils::read_obj_positions(shared_mesh("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
     for(int level = 0; level <= 2; ++level) {

@@ -79,8 +79,8 @@ std::size_t corner_count(const M& mesh)
 }
 
 // meshes of CGAL's data set, closed, with any face sizes
-const char* const closed_meshes[] = {"cgal/cube_quad.off",  "cgal/corner.off",   "cgal/P.off",
-                                     "cgal/mpi.off",        "cgal/3torus.off",   "cgal/cross_quad.off",
+const char* const closed_meshes[] = {"cgal/cube_quad.off",   "cgal/corner.off",   "cgal/P.off",
+                                     "cgal/mpi.off",         "cgal/3torus.off",   "cgal/cross_quad.off",
                                      "cgal/corner_poly.off", "cgal/elephant.off", "cgal/double-torus-example.off"};
 const char* const border_meshes[] = {"cgal/corner_with_hole.off", "cgal/double-torus-3-holes.off",
                                      "cgal/mesh_with_border.off", "cgal/corner_with_sharp_edge.off",
@@ -166,10 +166,10 @@ TEST(CatmullClark, matches_opensubdiv_reference_results)
   // only", and catmark_flap has no boundary tag: at their valence-2 corners
   // the baselines follow the smooth border rule 1/8, 6/8, 1/8, as ours by
   // default; catmark_edgecorner uses "edges and corners" (Border_corners::sharp).
-  for(const Case& c : {Case{"catmark_cube", S::Border_corners::smooth}, Case{"catmark_pyramid", S::Border_corners::smooth},
-                       Case{"catmark_tent", S::Border_corners::smooth},
-                       Case{"catmark_edgecorner", S::Border_corners::sharp},
-                       Case{"catmark_flap", S::Border_corners::smooth}}) {
+  for(const Case& c :
+      {Case{"catmark_cube", S::Border_corners::smooth}, Case{"catmark_pyramid", S::Border_corners::smooth},
+       Case{"catmark_tent", S::Border_corners::smooth}, Case{"catmark_edgecorner", S::Border_corners::sharp},
+       Case{"catmark_flap", S::Border_corners::smooth}}) {
     Mesh mesh = read_mesh("opensubdiv/" + c.shape + ".obj");
     for(int level = 0; level <= 2; ++level) {
       S::subdivide(mesh, S::Catmull_clark_mask<Mesh>(c.corners));
@@ -249,8 +249,14 @@ Exact_mesh grid(int n, std::vector<std::vector<VX>>& id)
 }
 
 // the cubic B-spline curve masks: vertex (1/8, 6/8, 1/8), edge (1/2, 1/2)
-FX vertex_mask(int d) { return d == 0 ? FX(6) / FX(8) : FX(1) / FX(8); }
-FX edge_mask(int) { return FX(1) / FX(2); }
+FX vertex_mask(int d)
+{
+  return d == 0 ? FX(6) / FX(8) : FX(1) / FX(8);
+}
+FX edge_mask(int)
+{
+  return FX(1) / FX(2);
+}
 
 } // namespace
 
@@ -430,10 +436,13 @@ TEST(QuadSchemes, exact_affine_invariance)
   SUBDIV_REQUIRE_SHARED_DATA();
   for(const std::string name : {"cgal/mpi.off", "cgal/double-torus-3-holes.off"}) {
     const Exact_mesh mesh = to_exact(read_mesh(name));
-    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::catmull_clark_subdivision(m); }, name + " Catmull-Clark");
+    expect_affine_invariant(
+      mesh, [](Exact_mesh& m) { S::catmull_clark_subdivision(m); }, name + " Catmull-Clark");
     // Doo-Sabin, also over mpi.off's faces of 5 to 10 corners, whose weights are rounded
-    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::doo_sabin_subdivision(m); }, name + " Doo-Sabin");
-    expect_affine_invariant(mesh, [](Exact_mesh& m) { S::linear_quad_subdivision(m); }, name + " linear");
+    expect_affine_invariant(
+      mesh, [](Exact_mesh& m) { S::doo_sabin_subdivision(m); }, name + " Doo-Sabin");
+    expect_affine_invariant(
+      mesh, [](Exact_mesh& m) { S::linear_quad_subdivision(m); }, name + " linear");
   }
 }
 
@@ -635,8 +644,7 @@ TEST(QuadSchemes, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_EQ(num_vertices(isolated), 9u);
   EXPECT_LT(position_mismatch(isolated, copy), 1e-300);
 
-  const std::string doo_sabin_message =
-    testing_utils::bad_input_message([&] { S::doo_sabin_subdivision(isolated); });
+  const std::string doo_sabin_message = testing_utils::bad_input_message([&] { S::doo_sabin_subdivision(isolated); });
   EXPECT_NE(doo_sabin_message.find("Doo-Sabin: vertex 8 is isolated"), std::string::npos) << doo_sabin_message;
   EXPECT_EQ(num_faces(isolated), 6u);
 }

@@ -10,8 +10,8 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "mesh_test_utils.h"
 
@@ -161,8 +161,8 @@ TEST(Sqrt3, border_matches_cgal_within_one_call_and_differs_across_calls)
     CGAL::Subdivision_method_3::Sqrt3_subdivision(theirs, CGAL::parameters::number_of_iterations(1));
   }
   CGAL::Subdivision_method_3::Sqrt3_subdivision(reference, CGAL::parameters::number_of_iterations(2));
-  EXPECT_EQ(border_edges(theirs), b);         // CGAL: the border was never refined
-  EXPECT_EQ(border_edges(ours), 3 * b);       // ours: refined on the second call
+  EXPECT_EQ(border_edges(theirs), b);   // CGAL: the border was never refined
+  EXPECT_EQ(border_edges(ours), 3 * b); // ours: refined on the second call
   EXPECT_EQ(num_vertices(ours), num_vertices(reference));
   EXPECT_LT(position_mismatch(ours, reference), 1e-12);
   EXPECT_NE(num_vertices(theirs), num_vertices(reference));
@@ -299,13 +299,12 @@ TEST(Sqrt3, stencils_sum_to_exactly_one)
     });
     EXPECT_EQ(count, host.number_of_new_vertices()) << what;
   };
-  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/icosahedron.off", "cgal/tetrahedron.off",
-                                "cgal/open_cube.off"}) {
+  for(const std::string name :
+      {"cgal/mesh_with_border.off", "cgal/icosahedron.off", "cgal/tetrahedron.off", "cgal/open_cube.off"}) {
     Exact_mesh mesh = read<Exact_mesh>(name);
     for(int level = 0; level < 2; ++level) {
       check(mesh, S::Sqrt3_mask<Exact_mesh>(), name + " Kobbelt level " + std::to_string(level));
-      check(mesh, S::Interpolating_sqrt3_mask<Exact_mesh>(),
-            name + " interpolating level " + std::to_string(level));
+      check(mesh, S::Interpolating_sqrt3_mask<Exact_mesh>(), name + " interpolating level " + std::to_string(level));
       S::sqrt3_subdivision(mesh);
     }
   }
@@ -456,7 +455,9 @@ TEST(Sqrt3, interpolating_one_ring_rule_at_valence_6_is_quadratic_precise)
   using IMask = S::Interpolating_sqrt3_mask<Exact_mesh>;
   // ring at lattice positions around the origin, the face between ring 5 and 0
   const int ring[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-  const auto quadratic = [](const FT& x, const FT& y) -> FT { return FT(3) * x * x - x * y + FT(2) * y * y + x - y + 1; };
+  const auto quadratic = [](const FT& x, const FT& y) -> FT {
+    return FT(3) * x * x - x * y + FT(2) * y * y + x - y + 1;
+  };
   for(int start = 0; start < 6; ++start) {
     // face (origin, ring[start-1], ring[start]): centroid
     const int a = (start + 5) % 6;

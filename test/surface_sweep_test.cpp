@@ -1,13 +1,13 @@
 // Every mesh of ../shared/data/meshes through every applicable scheme: a valid
 // refined mesh or a clear Bad_input, never a crash, and a refused call leaves
 // the mesh unchanged.
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 

@@ -9,6 +9,9 @@
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
+#include <CGAL/Subdiv/analysis/curve_analysis.h>
+#include <CGAL/Subdiv/analysis/limit.h>
+#include <CGAL/Subdiv/analysis/surface_analysis.h>
 #include <CGAL/Subdiv/curves/Bezier_scheme.h>
 #include <CGAL/Subdiv/curves/Chaikin_scheme.h>
 #include <CGAL/Subdiv/curves/Corner_cutting_scheme.h>
@@ -16,14 +19,11 @@
 #include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/curves/curve_mask.h>
 #include <CGAL/Subdiv/curves/refine_polyline.h>
-#include <CGAL/Subdiv/analysis/curve_analysis.h>
-#include <CGAL/Subdiv/analysis/surface_analysis.h>
-#include <CGAL/Subdiv/analysis/limit.h>
 
+#include <CGAL/Subdiv/stencils/Stencil_table.h>
+#include <CGAL/Subdiv/stencils/make_limit_stencil_table.h>
+#include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
-#include <CGAL/Subdiv/stencils/Stencil_table.h>
-#include <CGAL/Subdiv/stencils/make_stencil_table.h>
-#include <CGAL/Subdiv/stencils/make_limit_stencil_table.h>
 
 #endif // CGAL_SUBDIV_H

@@ -44,8 +44,8 @@ Agreement compare_points(const std::vector<P3>& a, const std::vector<P3>& b, dou
           const auto range = grid.equal_range(key(ci + di, cj + dj, ck + dk));
           for(auto it = range.first; it != range.second; ++it) {
             const P3& q = b[it->second];
-            const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                                       (p[2] - q[2]) * (p[2] - q[2]));
+            const double d =
+              std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
             best = std::min(best, d);
           }
         }

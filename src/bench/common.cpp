@@ -4,10 +4,10 @@
 // subdiv-bench: timing, memory, the bytes model (see bench.h).
 #include "bench.h"
 
+#include <malloc.h>
 #include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <malloc.h>
 #include <sstream>
 
 namespace subdiv_bench {
@@ -15,14 +15,14 @@ namespace subdiv_bench {
 std::string scheme_name(Scheme scheme)
 {
   switch(scheme) {
-  case Scheme::loop:
-    return "Loop";
-  case Scheme::catmull_clark:
-    return "Catmull-Clark";
-  case Scheme::doo_sabin:
-    return "Doo-Sabin";
-  case Scheme::sqrt3:
-    return "sqrt3";
+    case Scheme::loop:
+      return "Loop";
+    case Scheme::catmull_clark:
+      return "Catmull-Clark";
+    case Scheme::doo_sabin:
+      return "Doo-Sabin";
+    case Scheme::sqrt3:
+      return "sqrt3";
   }
   return "?";
 }
@@ -30,19 +30,25 @@ std::string scheme_name(Scheme scheme)
 void set_heap(Heap heap)
 {
   if(heap == Heap::warm) {
-    mallopt(M_MMAP_MAX, 0);                  // no block is mmapped: all come from the heap
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);      // and freed memory stays mapped
+    mallopt(M_MMAP_MAX, 0);             // no block is mmapped: all come from the heap
+    mallopt(M_TRIM_THRESHOLD, 1 << 30); // and freed memory stays mapped
   } else {
-    mallopt(M_MMAP_MAX, 65536);              // glibc's default count
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);   // a fixed threshold: no dynamic raise
-    mallopt(M_TRIM_THRESHOLD, 128 * 1024);   // freed heap memory is given back
+    mallopt(M_MMAP_MAX, 65536);            // glibc's default count
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024); // a fixed threshold: no dynamic raise
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024); // freed heap memory is given back
     malloc_trim(0);
   }
 }
 
-std::string heap_name(Heap heap) { return heap == Heap::warm ? "warm" : "fresh"; }
+std::string heap_name(Heap heap)
+{
+  return heap == Heap::warm ? "warm" : "fresh";
+}
 
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+double now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 std::vector<double> time_jobs(const std::vector<Job*>& jobs, int runs)
 {
@@ -80,8 +86,14 @@ std::size_t status_field(const std::string& field)
 
 } // namespace
 
-std::size_t resident_bytes() { return status_field("VmRSS"); }
-std::size_t peak_resident_bytes() { return status_field("VmHWM"); }
+std::size_t resident_bytes()
+{
+  return status_field("VmRSS");
+}
+std::size_t peak_resident_bytes()
+{
+  return status_field("VmHWM");
+}
 
 bool reset_peak()
 {
@@ -96,6 +108,9 @@ double apply_bytes(std::size_t stencils, std::size_t terms, std::size_t sources)
   return 12.0 * static_cast<double>(terms) + 32.0 * static_cast<double>(stencils) + 24.0 * static_cast<double>(sources);
 }
 
-double Apply_job::bytes() const { return apply_bytes(stencils(), terms(), sources()); }
+double Apply_job::bytes() const
+{
+  return apply_bytes(stencils(), terms(), sources());
+}
 
 } // namespace subdiv_bench

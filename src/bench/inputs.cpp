@@ -4,9 +4,9 @@
 // subdiv-bench: the inputs (see inputs.h and src/bench/README.md).
 #include "inputs.h"
 
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -65,7 +65,8 @@ Mesh mixed_torus(int nu, int nv, std::mt19937& random)
   std::vector<vertex_descriptor> v(static_cast<std::size_t>(nu * nv));
   for(int i = 0; i < nu; ++i)
     for(int j = 0; j < nv; ++j)
-      v[static_cast<std::size_t>(i * nv + j)] = mesh.add_vertex(torus_point(2 * pi * i / nu, 2 * pi * j / nv, 1.0, 0.4));
+      v[static_cast<std::size_t>(i * nv + j)] =
+        mesh.add_vertex(torus_point(2 * pi * i / nu, 2 * pi * j / nv, 1.0, 0.4));
   const auto at = [&](int i, int j) { return v[static_cast<std::size_t>((i % nu) * nv + (j % nv))]; };
   std::uniform_int_distribution<int> pick(0, 3);
   for(int i = 0; i < nu; i += 2)
@@ -73,22 +74,22 @@ Mesh mixed_torus(int nu, int nv, std::mt19937& random)
       const vertex_descriptor a = at(i, j), b = at(i + 1, j), e = at(i + 2, j);
       const vertex_descriptor d = at(i, j + 1), c = at(i + 1, j + 1), f = at(i + 2, j + 1);
       switch(pick(random)) {
-      case 0:
-        mesh.add_face(a, b, c, d);
-        mesh.add_face(b, e, f, c);
-        break;
-      case 1:
-        mesh.add_face(std::vector<vertex_descriptor>{a, b, e, f, c, d});
-        break;
-      case 2:
-        mesh.add_face(std::vector<vertex_descriptor>{a, b, e, f, c});
-        mesh.add_face(a, c, d);
-        break;
-      default:
-        mesh.add_face(a, b, c);
-        mesh.add_face(a, c, d);
-        mesh.add_face(b, e, c);
-        mesh.add_face(e, f, c);
+        case 0:
+          mesh.add_face(a, b, c, d);
+          mesh.add_face(b, e, f, c);
+          break;
+        case 1:
+          mesh.add_face(std::vector<vertex_descriptor>{a, b, e, f, c, d});
+          break;
+        case 2:
+          mesh.add_face(std::vector<vertex_descriptor>{a, b, e, f, c});
+          mesh.add_face(a, c, d);
+          break;
+        default:
+          mesh.add_face(a, b, c);
+          mesh.add_face(a, c, d);
+          mesh.add_face(b, e, c);
+          mesh.add_face(e, f, c);
       }
     }
   return mesh;

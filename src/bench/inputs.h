@@ -25,7 +25,7 @@ struct Input
   std::string id;   // short name, for the command line of child processes
   std::string name; // what the tables show
   Mesh mesh;
-  Soup soup;        // the same mesh as arrays (vertex and face order of `mesh`)
+  Soup soup; // the same mesh as arrays (vertex and face order of `mesh`)
   bool triangles = false;
   bool border = false;
   double diagonal = 1; // of the bounding box, for relative differences

@@ -22,6 +22,7 @@
 
 #include <CGAL/version.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,7 +33,6 @@
 #include <sstream>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 #ifndef SUBDIV_BENCH_MESH_DIR
@@ -83,16 +83,16 @@ const char* peer_names[] = {"ours", "CGAL", "OpenMesh", "OSD Far"};
 Job_ptr refinement(Peer peer, const Input& input, Scheme scheme, int levels)
 {
   switch(peer) {
-  case ours:
-    return ours_refinement(input, scheme, levels);
-  case cgal:
-    return cgal_refinement(input, scheme, levels);
-  case openmesh:
-    return openmesh_refinement(input.soup, scheme, levels);
-  case osd:
-    return osd_refinement(input.soup, scheme, levels);
-  default:
-    return nullptr;
+    case ours:
+      return ours_refinement(input, scheme, levels);
+    case cgal:
+      return cgal_refinement(input, scheme, levels);
+    case openmesh:
+      return openmesh_refinement(input.soup, scheme, levels);
+    case osd:
+      return osd_refinement(input.soup, scheme, levels);
+    default:
+      return nullptr;
   }
 }
 
@@ -138,15 +138,22 @@ const std::vector<Case> refinement_plan = {
 };
 
 const std::vector<Case> stencil_plan = {
-  {Scheme::loop, "tri20k", {1, 3}},         {Scheme::loop, "tri200k", {1, 2}},
-  {Scheme::loop, "border", {2}},            {Scheme::loop, "fandisk", {3}},
-  {Scheme::catmull_clark, "tri20k", {1, 3}}, {Scheme::catmull_clark, "quad200k", {1, 2}},
-  {Scheme::catmull_clark, "mixed", {2}},    {Scheme::catmull_clark, "spot", {5}},
+  {Scheme::loop, "tri20k", {1, 3}},
+  {Scheme::loop, "tri200k", {1, 2}},
+  {Scheme::loop, "border", {2}},
+  {Scheme::loop, "fandisk", {3}},
+  {Scheme::catmull_clark, "tri20k", {1, 3}},
+  {Scheme::catmull_clark, "quad200k", {1, 2}},
+  {Scheme::catmull_clark, "mixed", {2}},
+  {Scheme::catmull_clark, "spot", {5}},
 };
 
 const std::vector<Case> apply_plan = {
-  {Scheme::loop, "tri20k", {3}},         {Scheme::loop, "tri200k", {2}},  {Scheme::loop, "fandisk", {3}},
-  {Scheme::catmull_clark, "tri20k", {3}}, {Scheme::catmull_clark, "quad200k", {2}},
+  {Scheme::loop, "tri20k", {3}},
+  {Scheme::loop, "tri200k", {2}},
+  {Scheme::loop, "fandisk", {3}},
+  {Scheme::catmull_clark, "tri20k", {3}},
+  {Scheme::catmull_clark, "quad200k", {2}},
   {Scheme::catmull_clark, "mixed", {2}},
 };
 
@@ -241,26 +248,28 @@ Refinement_times time_refinement(const Input& in, Scheme scheme, int levels, int
 void refinement_section(const Options& options)
 {
   const bool two = ours_has_threads() && ours_with_tbb();
-  out("\n## Full refinement (topology + positions)\n\n"
-      "Seconds, minimum of " + std::to_string(options.runs) +
-      " runs after a warm-up, one thread unless said. Ours and CGAL: `loop_subdivision` / "
-      "`catmull_clark_subdivision` / ... and `Subdivision_method_3` on a copy of the input `Surface_mesh`, "
-      "refined in place; `ours 2T`: ours with `CGAL::Subdiv::threads(2)`. OpenMesh: "
-      "`Subdivider::Uniform::LoopT` / `CatmullClarkT` on its own mesh (double points). OSD Far: "
-      "`TopologyRefinerFactory<TopologyDescriptor>::Create` + `RefineUniform` + "
-      "`PrimvarRefinerReal<double>::Interpolate` level by level into arrays: topology and positions, but no "
-      "halfedge mesh at the end (the others end with one); it has no multi-threaded refinement. `ours/best` = "
-      "our one-thread time / the fastest other library's; `OSD/ours` = how many times faster than OpenSubdiv we "
-      "are. Targets: OSD/ours at least 2 with one thread, at least 3 with two.\n\n"
-      "`SM resize`: the `Surface_mesh::reserve`/`resize` calls alone that a refinement of the mesh in place must "
-      "make (Loop, Catmull-Clark), on the same copy: `std::vector` value-initialises every new element, and "
-      "`add_vertex`/`add_edge`/`add_face` do too, so no refinement into a `Surface_mesh` through its public API "
-      "can take less. Where the 2x target is missed and `SM resize` alone is more than half of OSD's time, the "
-      "cell says `(floor)`: the target is out of reach for a `Surface_mesh` output (doc/profile.md: with g++ 12 "
-      "this fill runs at about 3 GB/s).\n\n"
-      "| scheme | input | levels | output faces | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | "
-      "ours/best | OSD/ours | OSD/ours 2T | target 2x OSD | target 3x OSD (2T) |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  out(
+    "\n## Full refinement (topology + positions)\n\n"
+    "Seconds, minimum of " +
+    std::to_string(options.runs) +
+    " runs after a warm-up, one thread unless said. Ours and CGAL: `loop_subdivision` / "
+    "`catmull_clark_subdivision` / ... and `Subdivision_method_3` on a copy of the input `Surface_mesh`, "
+    "refined in place; `ours 2T`: ours with `CGAL::Subdiv::threads(2)`. OpenMesh: "
+    "`Subdivider::Uniform::LoopT` / `CatmullClarkT` on its own mesh (double points). OSD Far: "
+    "`TopologyRefinerFactory<TopologyDescriptor>::Create` + `RefineUniform` + "
+    "`PrimvarRefinerReal<double>::Interpolate` level by level into arrays: topology and positions, but no "
+    "halfedge mesh at the end (the others end with one); it has no multi-threaded refinement. `ours/best` = "
+    "our one-thread time / the fastest other library's; `OSD/ours` = how many times faster than OpenSubdiv we "
+    "are. Targets: OSD/ours at least 2 with one thread, at least 3 with two.\n\n"
+    "`SM resize`: the `Surface_mesh::reserve`/`resize` calls alone that a refinement of the mesh in place must "
+    "make (Loop, Catmull-Clark), on the same copy: `std::vector` value-initialises every new element, and "
+    "`add_vertex`/`add_edge`/`add_face` do too, so no refinement into a `Surface_mesh` through its public API "
+    "can take less. Where the 2x target is missed and `SM resize` alone is more than half of OSD's time, the "
+    "cell says `(floor)`: the target is out of reach for a `Surface_mesh` output (doc/profile.md: with g++ 12 "
+    "this fill runs at about 3 GB/s).\n\n"
+    "| scheme | input | levels | output faces | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | "
+    "ours/best | OSD/ours | OSD/ours 2T | target 2x OSD | target 3x OSD (2T) |\n"
+    "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
   for(const Case& c : refinement_plan) {
     const Input* in = input(c.input);
     if(in == nullptr)
@@ -275,8 +284,7 @@ void refinement_section(const Options& options)
       for(int p = 1; p < number_of_peers; ++p)
         if(jobs[p])
           best = std::min(best, t[static_cast<std::size_t>(p)]);
-      const std::string where =
-        scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
+      const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
       std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
                         std::to_string(jobs[ours]->output_faces()) + " | " + seconds(t[ours]) + " | " +
                         (ours2 ? seconds(t2) : "-") + " |";
@@ -286,13 +294,12 @@ void refinement_section(const Options& options)
         const bool out_of_reach = floor && t_floor > t[osd] / 2;
         const std::string reach = out_of_reach ? " (floor)" : "";
         const std::string note = out_of_reach ? ", SM resize alone " + seconds(t_floor) + " s" : "";
-        row += " " + fixed(speedup) + " | " + fixed(speedup2) + " | " +
-               check(speedup >= 2, "full refinement >= 2x OSD, " + where, fixed(speedup) + "x" + note) + reach +
-               " | " +
-               (ours2 ? check(speedup2 >= 3, "full refinement >= 3x OSD with 2 threads, " + where,
-                              fixed(speedup2) + "x")
-                      : std::string("**MISSED** (no 2T path)")) +
-               " |";
+        row +=
+          " " + fixed(speedup) + " | " + fixed(speedup2) + " | " +
+          check(speedup >= 2, "full refinement >= 2x OSD, " + where, fixed(speedup) + "x" + note) + reach + " | " +
+          (ours2 ? check(speedup2 >= 3, "full refinement >= 3x OSD with 2 threads, " + where, fixed(speedup2) + "x")
+                 : std::string("**MISSED** (no 2T path)")) +
+          " |";
       } else {
         row += " - | - | | |";
       }
@@ -343,9 +350,10 @@ void refinement_section(const Options& options)
     }
   }
   if(!two) {
-    out("\nTarget \"at least 3x faster than OSD Far with 2 threads\": **MISSED** on every row: this build of CGAL "
-        "Subdiv has no multi-threaded refinement (" +
-        std::string(ours_has_threads() ? "compiled without TBB" : "no `threads` named parameter") + ").\n");
+    out(
+      "\nTarget \"at least 3x faster than OSD Far with 2 threads\": **MISSED** on every row: this build of CGAL "
+      "Subdiv has no multi-threaded refinement (" +
+      std::string(ours_has_threads() ? "compiled without TBB" : "no `threads` named parameter") + ").\n");
     missed.push_back("full refinement >= 3x OSD with 2 threads: no 2-thread path in this build of CGAL Subdiv");
   }
 }
@@ -353,21 +361,24 @@ void refinement_section(const Options& options)
 // --- the same refinements, each run in fresh memory -----------------------------
 
 const std::vector<Case> fresh_plan = {
-  {Scheme::loop, "tri20k", {3}},          {Scheme::loop, "tri200k", {2}},         {Scheme::catmull_clark, "tri20k", {3}},
-  {Scheme::catmull_clark, "quad200k", {2}}, {Scheme::catmull_clark, "mixed", {2}},
+  {Scheme::loop, "tri20k", {3}},          {Scheme::loop, "tri200k", {2}},
+  {Scheme::catmull_clark, "tri20k", {3}}, {Scheme::catmull_clark, "quad200k", {2}},
+  {Scheme::catmull_clark, "mixed", {2}},
 };
 
 void fresh_memory_section(const Options& options)
 {
   set_heap(Heap::fresh);
-  out("\n## Full refinement in fresh memory\n\n"
-      "The largest cases of the next table, run first, with glibc set so that every block of 128 KiB or more is a new `mmap`, unmapped "
-      "when freed: each run pays the page faults and the zeroing of all the memory it writes, as a program that "
-      "refines once does (the next table keeps the heap warm, the steady state of a program that refines again "
-      "and again, which is what a minimum after a warm-up measures). For information; the targets are checked "
-      "in the next table.\n\n"
-      "| scheme | input | levels | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | OSD/ours | OSD/ours 2T "
-      "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  out(
+    "\n## Full refinement in fresh memory\n\n"
+    "The largest cases of the next table, run first, with glibc set so that every block of 128 KiB or more is a new "
+    "`mmap`, unmapped "
+    "when freed: each run pays the page faults and the zeroing of all the memory it writes, as a program that "
+    "refines once does (the next table keeps the heap warm, the steady state of a program that refines again "
+    "and again, which is what a minimum after a warm-up measures). For information; the targets are checked "
+    "in the next table.\n\n"
+    "| scheme | input | levels | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | OSD/ours | OSD/ours 2T "
+    "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for(const Case& c : fresh_plan) {
     const Input* in = input(c.input);
     if(in == nullptr)
@@ -376,9 +387,9 @@ void fresh_memory_section(const Options& options)
     const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
     const std::vector<double>& t = r.t;
     std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                      seconds(t[ours]) + " | " + (r.ours2 ? seconds(r.two()) : "-") + " |" +
-                      r.peer_and_floor_cells() + " " + (r.jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) +
-                      " | " + (r.jobs[osd] && r.ours2 ? fixed(t[osd] / r.two()) : std::string("-")) + " |";
+                      seconds(t[ours]) + " | " + (r.ours2 ? seconds(r.two()) : "-") + " |" + r.peer_and_floor_cells() +
+                      " " + (r.jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) + " | " +
+                      (r.jobs[osd] && r.ours2 ? fixed(t[osd] / r.two()) : std::string("-")) + " |";
     out(row + "\n");
   }
   set_heap(options.heap);
@@ -388,17 +399,19 @@ void fresh_memory_section(const Options& options)
 
 void stencil_build_section(const Options& options)
 {
-  out("\n## Stencil table build\n\n"
-      "Seconds, minimum of " + std::to_string(options.runs) +
-      " runs. Ours: `make_stencil_table(mesh, mask, levels)` (the refined topology and one composed table from "
-      "the coarse points to the finest ones, input check included). OSD: `StencilTableFactoryReal<double>::Create` "
-      "on a uniformly refined `TopologyRefiner` (generateIntermediateLevels = false, "
-      "factorizeIntermediateLevels = true, generateOffsets = true), timed with the refiner's creation and "
-      "`RefineUniform` (`OSD r+f`, like for like with ours) and alone (`OSD factory`, the refiner made outside "
-      "the timer). `ours 2T`: ours with `threads(2)`, for information (OpenSubdiv's factory has one thread). "
-      "Target: ours (one thread) at least 5x faster than the factory.\n\n"
-      "| scheme | input | levels | ours | ours 2T | OSD r+f | OSD factory | OSD r+f / ours | OSD factory / ours | "
-      "target 5x (r+f) | target 5x (factory alone) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  out(
+    "\n## Stencil table build\n\n"
+    "Seconds, minimum of " +
+    std::to_string(options.runs) +
+    " runs. Ours: `make_stencil_table(mesh, mask, levels)` (the refined topology and one composed table from "
+    "the coarse points to the finest ones, input check included). OSD: `StencilTableFactoryReal<double>::Create` "
+    "on a uniformly refined `TopologyRefiner` (generateIntermediateLevels = false, "
+    "factorizeIntermediateLevels = true, generateOffsets = true), timed with the refiner's creation and "
+    "`RefineUniform` (`OSD r+f`, like for like with ours) and alone (`OSD factory`, the refiner made outside "
+    "the timer). `ours 2T`: ours with `threads(2)`, for information (OpenSubdiv's factory has one thread). "
+    "Target: ours (one thread) at least 5x faster than the factory.\n\n"
+    "| scheme | input | levels | ours | ours 2T | OSD r+f | OSD factory | OSD r+f / ours | OSD factory / ours | "
+    "target 5x (r+f) | target 5x (factory alone) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
   for(const Case& c : stencil_plan) {
     const Input* in = input(c.input);
     if(in == nullptr)
@@ -410,8 +423,8 @@ void stencil_build_section(const Options& options)
       Job_ptr mine2 = ours_has_threads() && ours_with_tbb() ? ours_stencil_build(*in, c.scheme, levels, 2) : nullptr;
       const std::vector<double> t = time_jobs({mine.get(), both.get(), factory.get(), mine2.get()}, options.runs);
       std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                        seconds(t[0]) + " | " + (mine2 ? seconds(t[3]) : "-") + " | " +
-                        (both ? seconds(t[1]) : "-") + " | " + (factory ? seconds(t[2]) : "-") + " |";
+                        seconds(t[0]) + " | " + (mine2 ? seconds(t[3]) : "-") + " | " + (both ? seconds(t[1]) : "-") +
+                        " | " + (factory ? seconds(t[2]) : "-") + " |";
       if(both && factory) {
         const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
         row += " " + fixed(t[1] / t[0]) + " | " + fixed(t[2] / t[0]) + " | " +
@@ -450,30 +463,33 @@ void apply_section(const Options& options)
   const Bandwidth one = measure_bandwidth(1, elements, std::max(5, options.runs));
   const Bandwidth two = measure_bandwidth(2, elements, std::max(5, options.runs));
   const std::size_t cache = last_level_cache_bytes();
-  out("\n## Memory bandwidth (STREAM-like, same run)\n\n"
-      "Three arrays of " + std::to_string(elements) + " doubles (" + std::to_string(elements * 8 >> 20) +
-      " MiB each; last-level cache " + std::to_string(cache >> 20) +
-      " MiB), best of " + std::to_string(std::max(5, options.runs)) +
-      " passes, threads on contiguous halves; bytes as STREAM counts them (copy 16 B, triad 24 B per element).\n\n"
-      "| threads | copy GB/s | triad GB/s |\n|---:|---:|---:|\n| 1 | " + fixed(one.copy, 1) + " | " +
-      fixed(one.triad, 1) + " |\n| 2 | " + fixed(two.copy, 1) + " | " + fixed(two.triad, 1) + " |\n");
+  out(
+    "\n## Memory bandwidth (STREAM-like, same run)\n\n"
+    "Three arrays of " +
+    std::to_string(elements) + " doubles (" + std::to_string(elements * 8 >> 20) + " MiB each; last-level cache " +
+    std::to_string(cache >> 20) + " MiB), best of " + std::to_string(std::max(5, options.runs)) +
+    " passes, threads on contiguous halves; bytes as STREAM counts them (copy 16 B, triad 24 B per element).\n\n"
+    "| threads | copy GB/s | triad GB/s |\n|---:|---:|---:|\n| 1 | " +
+    fixed(one.copy, 1) + " | " + fixed(one.triad, 1) + " |\n| 2 | " + fixed(two.copy, 1) + " | " + fixed(two.triad, 1) +
+    " |\n");
 
-  out("\n## Stencil apply\n\n"
-      "Seconds to evaluate every stencil once (coarse points in, finest points out), minimum of " +
-      std::to_string(options.runs) +
-      " runs. Ours: `Stencil_table<double>::apply` on `std::vector<Point_3>` (1 thread) and `apply_range` on two "
-      "halves in two `std::thread`s (2 threads). OSD: `StencilTableReal<double>::UpdateValues`, one thread and "
-      "two `std::thread`s on two halves (its `start`, `end` arguments). `OSD omp float`: "
-      "`Osd::OmpEvaluator::EvalStencils`, 2 OpenMP threads, on a float table (the only multi-threaded CPU "
-      "evaluator of Debian's libosdCPU; floats, so half the bytes; for reference, no target). "
-      "`MB`: the bytes one apply must move in our model: per term 8 B weight + 4 B index, per stencil 8 B (where "
-      "it ends) + 24 B written, per source point 24 B read once (repeated source reads and the write-allocate "
-      "read are not counted). `%BW` = MB / time / triad bandwidth of the same thread count. Targets: ours at most "
-      "OSD's time (1 and 2 threads), and 70 % of the 2-thread bandwidth where the output (24 B per stencil) is "
-      "larger than the last-level cache.\n\n"
-      "| scheme | input | levels | stencils | terms | MB | ours 1T | OSD 1T | ours 2T | OSD 2T | OSD omp float 2T "
-      "| ours %BW 1T | ours %BW 2T | OSD %BW 2T | target 1T | target 2T | target 70% BW | ours vs OSD points "
-      "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|\n");
+  out(
+    "\n## Stencil apply\n\n"
+    "Seconds to evaluate every stencil once (coarse points in, finest points out), minimum of " +
+    std::to_string(options.runs) +
+    " runs. Ours: `Stencil_table<double>::apply` on `std::vector<Point_3>` (1 thread) and `apply_range` on two "
+    "halves in two `std::thread`s (2 threads). OSD: `StencilTableReal<double>::UpdateValues`, one thread and "
+    "two `std::thread`s on two halves (its `start`, `end` arguments). `OSD omp float`: "
+    "`Osd::OmpEvaluator::EvalStencils`, 2 OpenMP threads, on a float table (the only multi-threaded CPU "
+    "evaluator of Debian's libosdCPU; floats, so half the bytes; for reference, no target). "
+    "`MB`: the bytes one apply must move in our model: per term 8 B weight + 4 B index, per stencil 8 B (where "
+    "it ends) + 24 B written, per source point 24 B read once (repeated source reads and the write-allocate "
+    "read are not counted). `%BW` = MB / time / triad bandwidth of the same thread count. Targets: ours at most "
+    "OSD's time (1 and 2 threads), and 70 % of the 2-thread bandwidth where the output (24 B per stencil) is "
+    "larger than the last-level cache.\n\n"
+    "| scheme | input | levels | stencils | terms | MB | ours 1T | OSD 1T | ours 2T | OSD 2T | OSD omp float 2T "
+    "| ours %BW 1T | ours %BW 2T | OSD %BW 2T | target 1T | target 2T | target 70% BW | ours vs OSD points "
+    "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|\n");
   for(const Case& c : apply_plan) {
     const Input* in = input(c.input);
     if(in == nullptr)
@@ -495,14 +511,14 @@ void apply_section(const Options& options)
     const double mb = mine->bytes() / 1e6;
     const double ours_bw1 = mine->bytes() / t[0] / 1e9 / one.triad, ours_bw2 = mine->bytes() / t[2] / 1e9 / two.triad;
     const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
-    std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                      std::to_string(mine->stencils()) + " | " + std::to_string(mine->terms()) +
-                      (theirs && theirs->terms() != mine->terms() ? " (OSD " + std::to_string(theirs->terms()) + ")"
-                                                                  : "") +
-                      " | " + fixed(mb, 0) + " | " + seconds(t[0]) + " | " + (theirs ? seconds(t[1]) : "-") + " | " +
-                      seconds(t[2]) + " | " + (theirs ? seconds(t[3]) : "-") + " | " + (omp ? seconds(t[4]) : "-") +
-                      " | " + fixed(100 * ours_bw1, 0) + " | " + fixed(100 * ours_bw2, 0) + " | " +
-                      (theirs ? fixed(100 * theirs->bytes() / t[3] / 1e9 / two.triad, 0) : "-") + " |";
+    std::string row =
+      "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
+      std::to_string(mine->stencils()) + " | " + std::to_string(mine->terms()) +
+      (theirs && theirs->terms() != mine->terms() ? " (OSD " + std::to_string(theirs->terms()) + ")" : "") + " | " +
+      fixed(mb, 0) + " | " + seconds(t[0]) + " | " + (theirs ? seconds(t[1]) : "-") + " | " + seconds(t[2]) + " | " +
+      (theirs ? seconds(t[3]) : "-") + " | " + (omp ? seconds(t[4]) : "-") + " | " + fixed(100 * ours_bw1, 0) + " | " +
+      fixed(100 * ours_bw2, 0) + " | " + (theirs ? fixed(100 * theirs->bytes() / t[3] / 1e9 / two.triad, 0) : "-") +
+      " |";
     if(theirs) {
       row += " " + check(t[0] <= t[1], "stencil apply 1 thread <= OSD, " + where, fixed(t[0] / t[1]) + "x OSD's time");
       row += " (" + fixed(t[0] / t[1]) + "x) | " +
@@ -512,8 +528,9 @@ void apply_section(const Options& options)
       row += " | |";
     }
     if(24.0 * static_cast<double>(mine->stencils()) > static_cast<double>(cache))
-      row += " " + check(ours_bw2 >= 0.7, "stencil apply >= 70% of bandwidth on 2 threads, " + where,
-                         fixed(100 * ours_bw2, 0) + "%") +
+      row += " " +
+             check(ours_bw2 >= 0.7, "stencil apply >= 70% of bandwidth on 2 threads, " + where,
+                   fixed(100 * ours_bw2, 0) + "%") +
              " |";
     else
       row += " (fits in cache) |";
@@ -552,8 +569,8 @@ double child_memory(const Options& options, Peer peer, Scheme scheme, const std:
   const std::string self = self_path();
   if(self.empty())
     return nan_value;
-  std::string command = "'" + self + "' --memory-child " + std::to_string(peer) + " '" + scheme_name(scheme) +
-                        "' " + id + " " + std::to_string(levels) + " --meshes '" + options.mesh_dir + "'" +
+  std::string command = "'" + self + "' --memory-child " + std::to_string(peer) + " '" + scheme_name(scheme) + "' " +
+                        id + " " + std::to_string(levels) + " --meshes '" + options.mesh_dir + "'" +
                         (options.quick ? " --quick" : "");
   FILE* pipe = popen(command.c_str(), "r");
   if(pipe == nullptr)
@@ -606,13 +623,14 @@ int memory_child(int argc, char** argv, int at)
 
 void memory_section(const Options& options)
 {
-  out("\n## Peak memory of one refinement\n\n"
-      "MB above the baseline: each refinement runs once in a child process of its own (this program again), "
-      "which makes the input and the library's copy of it, then restarts the peak count of its resident set "
-      "(`/proc/self/clear_refs`), notes its size (`VmRSS`), runs the refinement and reads the peak (`VmHWM`). "
-      "Target: ours no higher than CGAL's `Subdivision_method_3`.\n\n"
-      "| scheme | input | levels | ours MB | CGAL MB | OpenMesh MB | OSD Far MB | ours/CGAL | target <= CGAL |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
+  out(
+    "\n## Peak memory of one refinement\n\n"
+    "MB above the baseline: each refinement runs once in a child process of its own (this program again), "
+    "which makes the input and the library's copy of it, then restarts the peak count of its resident set "
+    "(`/proc/self/clear_refs`), notes its size (`VmRSS`), runs the refinement and reads the peak (`VmHWM`). "
+    "Target: ours no higher than CGAL's `Subdivision_method_3`.\n\n"
+    "| scheme | input | levels | ours MB | CGAL MB | OpenMesh MB | OSD Far MB | ours/CGAL | target <= CGAL |\n"
+    "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
   for(const Case& c : memory_plan) {
     const Input* in = input(c.input);
     if(in == nullptr)
@@ -620,18 +638,18 @@ void memory_section(const Options& options)
     const int levels = c.levels.front();
     double mb[number_of_peers];
     for(int p = 0; p < number_of_peers; ++p)
-      mb[p] = refinement(static_cast<Peer>(p), *in, c.scheme, 1) ? child_memory(options, static_cast<Peer>(p),
-                                                                                c.scheme, c.input, levels)
-                                                                 : nan_value;
+      mb[p] = refinement(static_cast<Peer>(p), *in, c.scheme, 1)
+                ? child_memory(options, static_cast<Peer>(p), c.scheme, c.input, levels)
+                : nan_value;
     std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " |";
     for(int p = 0; p < number_of_peers; ++p)
       row += " " + fixed(mb[p], 0) + " |";
     row += " " + fixed(mb[ours] / mb[cgal]) + " | ";
     if(std::isfinite(mb[ours]) && std::isfinite(mb[cgal]))
-      row += check(mb[ours] <= mb[cgal],
-                   "peak memory <= CGAL's, " + scheme_name(c.scheme) + ", " + in->name + ", " +
-                     std::to_string(levels) + " levels",
-                   fixed(mb[ours], 0) + " MB vs " + fixed(mb[cgal], 0) + " MB");
+      row += check(
+        mb[ours] <= mb[cgal],
+        "peak memory <= CGAL's, " + scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels",
+        fixed(mb[ours], 0) + " MB vs " + fixed(mb[cgal], 0) + " MB");
     else
       row += "(not measured)";
     out(row + " |\n");
@@ -642,14 +660,15 @@ void memory_section(const Options& options)
 
 void agreement_section()
 {
-  out("\n## Agreement of the points\n\n"
-      "Largest distance between our refined points and another library's, over the bounding-box diagonal of the "
-      "input, at the last level of each case above (the points paired by position: the libraries number new "
-      "vertices differently). Where the rules coincide (OSD with VTX_BOUNDARY_EDGE_ONLY and TRI_SUB_CATMARK; "
-      "CGAL; OpenMesh except its Catmull-Clark border rule) anything above 1e-12 is marked DIFFER.\n\n"
-      "`ours 2T = 1T`: whether our points with two threads are those of one thread, bit for bit.\n\n"
-      "| scheme | input | levels | vs CGAL | vs OpenMesh | vs OSD Far | ours 2T = 1T |\n"
-      "|---|---|---:|---|---|---|---|\n");
+  out(
+    "\n## Agreement of the points\n\n"
+    "Largest distance between our refined points and another library's, over the bounding-box diagonal of the "
+    "input, at the last level of each case above (the points paired by position: the libraries number new "
+    "vertices differently). Where the rules coincide (OSD with VTX_BOUNDARY_EDGE_ONLY and TRI_SUB_CATMARK; "
+    "CGAL; OpenMesh except its Catmull-Clark border rule) anything above 1e-12 is marked DIFFER.\n\n"
+    "`ours 2T = 1T`: whether our points with two threads are those of one thread, bit for bit.\n\n"
+    "| scheme | input | levels | vs CGAL | vs OpenMesh | vs OSD Far | ours 2T = 1T |\n"
+    "|---|---|---:|---|---|---|---|\n");
   for(const Agreement_row& a : agreements)
     out("| " + a.scheme + " | " + a.input + " | " + std::to_string(a.levels) + " | " + a.versus[cgal] + " | " +
         a.versus[openmesh] + " | " + a.versus[osd] + " | " + a.same_with_two_threads + " |\n");
@@ -666,20 +685,21 @@ void exact_section(const Options& options)
   std::string why;
   if(!make_input("tri20k", true, options.mesh_dir, small, why))
     return;
-  out("\n## Exact kernels\n\n"
-      "The same refinement with `CGAL::Epick` and `CGAL::Epeck` points on a small input (" + small.name +
-      "), seconds, minimum of " + std::to_string(options.runs) +
-      " runs. No target: this says what exact constructions cost (`Epeck` stores every constructed coordinate as "
-      "a lazy exact number).\n\n"
-      "| scheme | levels | output faces | ours Epick | ours Epeck | Epeck/Epick | CGAL Epick | CGAL Epeck | "
-      "Epeck/Epick |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  out(
+    "\n## Exact kernels\n\n"
+    "The same refinement with `CGAL::Epick` and `CGAL::Epeck` points on a small input (" +
+    small.name + "), seconds, minimum of " + std::to_string(options.runs) +
+    " runs. No target: this says what exact constructions cost (`Epeck` stores every constructed coordinate as "
+    "a lazy exact number).\n\n"
+    "| scheme | levels | output faces | ours Epick | ours Epeck | Epeck/Epick | CGAL Epick | CGAL Epeck | "
+    "Epeck/Epick |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for(const Scheme scheme : {Scheme::loop, Scheme::catmull_clark})
     for(int levels = 1; levels <= 2; ++levels) {
-      Job_ptr jobs[4] = {ours_refinement_kernel(small, scheme, levels, false),
-                         ours_refinement_kernel(small, scheme, levels, true),
-                         cgal_refinement_kernel(small, scheme, levels, false),
-                         cgal_refinement_kernel(small, scheme, levels, true)};
-      const std::vector<double> t = time_jobs({jobs[0].get(), jobs[1].get(), jobs[2].get(), jobs[3].get()}, options.runs);
+      Job_ptr jobs[4] = {
+        ours_refinement_kernel(small, scheme, levels, false), ours_refinement_kernel(small, scheme, levels, true),
+        cgal_refinement_kernel(small, scheme, levels, false), cgal_refinement_kernel(small, scheme, levels, true)};
+      const std::vector<double> t =
+        time_jobs({jobs[0].get(), jobs[1].get(), jobs[2].get(), jobs[3].get()}, options.runs);
       out("| " + scheme_name(scheme) + " | " + std::to_string(levels) + " | " +
           std::to_string(jobs[0]->output_faces()) + " | " + seconds(t[0]) + " | " + seconds(t[1]) + " | " +
           fixed(t[1] / t[0], 1) + " | " + seconds(t[2]) + " | " + seconds(t[3]) + " | " + fixed(t[3] / t[2], 1) +
@@ -808,7 +828,8 @@ int main(int argc, char** argv)
       options.write_doc = true;
     } else if(arg == "--no-memory") {
       options.memory = false;
-    } else if(arg == "--heap" && i + 1 < argc && (std::string(argv[i + 1]) == "warm" || std::string(argv[i + 1]) == "fresh")) {
+    } else if(arg == "--heap" && i + 1 < argc &&
+              (std::string(argv[i + 1]) == "warm" || std::string(argv[i + 1]) == "fresh")) {
       options.heap = std::string(argv[++i]) == "warm" ? Heap::warm : Heap::fresh;
     } else if(arg == "--meshes" && i + 1 < argc) {
       options.mesh_dir = argv[++i];
@@ -818,7 +839,8 @@ int main(int argc, char** argv)
     } else {
       std::printf(
         "usage: subdiv-bench [--runs N] [--quick] [--write-doc] [--no-memory] [--heap warm|fresh] [--meshes DIR]\n"
-        "       subdiv-bench [--quick] [--heap warm|fresh] [--meshes DIR] --profile PEER SCHEME INPUT LEVELS [REPEATS]\n\n"
+        "       subdiv-bench [--quick] [--heap warm|fresh] [--meshes DIR] --profile PEER SCHEME INPUT LEVELS "
+        "[REPEATS]\n\n"
         "Times CGAL Subdiv against CGAL's Subdivision_method_3, OpenMesh and OpenSubdiv (when found at build\n"
         "time): full refinement, stencil table build and apply, peak memory, agreement of the points, exact\n"
         "kernels; minimum of N runs (default 3) after a warm-up. --quick: inputs 10x smaller. --write-doc: also\n"
@@ -827,7 +849,8 @@ int main(int argc, char** argv)
         "(warm, the default: reused; fresh: a new mmap each time, so every run pays its page faults; given\n"
         "before --profile, it applies there too). --meshes: the shared mesh directory (default %s).\n"
         "--profile: only run one job REPEATS times (default 10), for perf; PEER: ours, CGAL, OpenMesh, OSD,\n"
-        "ours-2T, ours-stencils, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the floor); SCHEME: Loop, Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
+        "ours-2T, ours-stencils, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the floor); SCHEME: Loop, "
+        "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
         "quad200k, mixed, border, fandisk, mushroom, spot.\n",
         SUBDIV_BENCH_MESH_DIR);
       return arg == "-h" || arg == "--help" ? 0 : 2;
@@ -855,31 +878,37 @@ int main(int argc, char** argv)
       missing_inputs.push_back(id + " (" + why + ")");
   }
 
-  out("# Performance\n\n"
-      "Written by `subdiv-bench` (src/bench/README.md) in one run; do not edit by hand. Why the missed targets are missed: doc/profile.md. Regenerate with\n\n"
-      "```\ncmake --build build --target subdiv-bench\nbuild/src/subdiv-bench --write-doc\n```\n\n"
-      "Conditions of this run:\n\n- date: " + std::string(date) + "\n- command: `" + options.command +
-      "`\n- machine: " + trim(file_line("/proc/cpuinfo", "model name")) + ", " +
-      std::to_string(std::thread::hardware_concurrency()) + " cores, " +
-      trim(file_line("/proc/meminfo", "MemTotal")) + " of memory; load average before the run: " + load_before +
-      " (the machine is shared: timings vary by 10-30 % between runs; compare ratios of the same run)\n"
-      "- compiler: g++ " + __VERSION__ + ", `-O2 -DNDEBUG` (no CGAL assertions in either library)\n"
-      "- libraries: CGAL " + CGAL_VERSION_STR + "; OpenMesh " +
-      (openmesh_missing().empty() ? openmesh_version() : "skipped: " + openmesh_missing()) + "; OpenSubdiv " +
-      (osd_missing().empty() ? osd_version() : "skipped: " + osd_missing()) + "\n- CGAL Subdiv: " +
-      source_state() + "; `threads` named parameter: " + (ours_has_threads() ? "yes" : "no") +
-      "; TBB: " + (ours_with_tbb() ? "yes" : "no") + "\n- timing: minimum of " +
-      std::to_string(options.runs) +
-      " runs after one warm-up run, the libraries interleaved; inputs made (or read) and copied outside the "
-      "timers, results freed outside the timers\n- memory: `--heap " + heap_name(options.heap) + "`: " +
-      (options.heap == Heap::warm
-         ? "glibc's malloc takes every block from the heap and keeps freed memory (`M_MMAP_MAX` 0, "
-           "`M_TRIM_THRESHOLD` 1 GiB), the same for every library, so the runs after the warm-up reuse mapped "
-           "pages (with glibc's defaults blocks up to 32 MiB are reused and larger ones are mapped afresh every "
-           "time, which favours libraries made of many small arrays by chance); the section \"in fresh memory\" "
-           "shows the other extreme"
-         : "every block of 128 KiB or more is a new mmap (each run pays its page faults)") +
-      "\n");
+  out(
+    "# Performance\n\n"
+    "Written by `subdiv-bench` (src/bench/README.md) in one run; do not edit by hand. Why the missed targets are "
+    "missed: doc/profile.md. Regenerate with\n\n"
+    "```\ncmake --build build --target subdiv-bench\nbuild/src/subdiv-bench --write-doc\n```\n\n"
+    "Conditions of this run:\n\n- date: " +
+    std::string(date) + "\n- command: `" + options.command +
+    "`\n- machine: " + trim(file_line("/proc/cpuinfo", "model name")) + ", " +
+    std::to_string(std::thread::hardware_concurrency()) + " cores, " + trim(file_line("/proc/meminfo", "MemTotal")) +
+    " of memory; load average before the run: " + load_before +
+    " (the machine is shared: timings vary by 10-30 % between runs; compare ratios of the same run)\n"
+    "- compiler: g++ " +
+    __VERSION__ +
+    ", `-O2 -DNDEBUG` (no CGAL assertions in either library)\n"
+    "- libraries: CGAL " +
+    CGAL_VERSION_STR + "; OpenMesh " +
+    (openmesh_missing().empty() ? openmesh_version() : "skipped: " + openmesh_missing()) + "; OpenSubdiv " +
+    (osd_missing().empty() ? osd_version() : "skipped: " + osd_missing()) + "\n- CGAL Subdiv: " + source_state() +
+    "; `threads` named parameter: " + (ours_has_threads() ? "yes" : "no") +
+    "; TBB: " + (ours_with_tbb() ? "yes" : "no") + "\n- timing: minimum of " + std::to_string(options.runs) +
+    " runs after one warm-up run, the libraries interleaved; inputs made (or read) and copied outside the "
+    "timers, results freed outside the timers\n- memory: `--heap " +
+    heap_name(options.heap) + "`: " +
+    (options.heap == Heap::warm
+       ? "glibc's malloc takes every block from the heap and keeps freed memory (`M_MMAP_MAX` 0, "
+         "`M_TRIM_THRESHOLD` 1 GiB), the same for every library, so the runs after the warm-up reuse mapped "
+         "pages (with glibc's defaults blocks up to 32 MiB are reused and larger ones are mapped afresh every "
+         "time, which favours libraries made of many small arrays by chance); the section \"in fresh memory\" "
+         "shows the other extreme"
+       : "every block of 128 KiB or more is a new mmap (each run pays its page faults)") +
+    "\n");
   if(options.quick)
     out("- **--quick: inputs 10x smaller than the documented ones**\n");
   out("\nInputs (identical for every library):\n\n");
@@ -909,19 +938,22 @@ int main(int argc, char** argv)
     out("- MISSED: " + m + "\n");
   out("\nRun time " + fixed(now() - start, 0) + " s; load average after the run: " + load_average() + ".\n");
 
-  const std::string svg = bar_chart_svg(
-    "Full refinement: output faces per second (millions), one thread unless said", "million output faces per second (longer is faster)",
-    ours_has_threads() && ours_with_tbb()
-      ? std::vector<std::string>{"CGAL Subdiv (ours)", "CGAL Subdivision_method_3", "OpenMesh",
-                                 "OpenSubdiv Far (no halfedge mesh)", "ours, 2 threads"}
-      : std::vector<std::string>{"CGAL Subdiv (ours)", "CGAL Subdivision_method_3", "OpenMesh",
-                                 "OpenSubdiv Far (no halfedge mesh)"},
-    chart);
+  const std::string svg =
+    bar_chart_svg("Full refinement: output faces per second (millions), one thread unless said",
+                  "million output faces per second (longer is faster)",
+                  ours_has_threads() && ours_with_tbb()
+                    ? std::vector<std::string>{"CGAL Subdiv (ours)", "CGAL Subdivision_method_3", "OpenMesh",
+                                               "OpenSubdiv Far (no halfedge mesh)", "ours, 2 threads"}
+                    : std::vector<std::string>{"CGAL Subdiv (ours)", "CGAL Subdivision_method_3", "OpenMesh",
+                                               "OpenSubdiv Far (no halfedge mesh)"},
+                  chart);
   if(options.write_doc) {
-    const std::string md_path = options.doc_dir + "/performance.md", svg_path = options.doc_dir + "/figures/performance.svg";
+    const std::string md_path = options.doc_dir + "/performance.md",
+                      svg_path = options.doc_dir + "/figures/performance.svg";
     std::ofstream(svg_path) << svg;
     std::ofstream md(md_path);
-    md << document.substr(0, document.find("\n## Full refinement")) << "\n![full refinement speed](figures/performance.svg)\n"
+    md << document.substr(0, document.find("\n## Full refinement"))
+       << "\n![full refinement speed](figures/performance.svg)\n"
        << document.substr(document.find("\n## Full refinement"));
     std::printf("\nwrote %s and %s\n", md_path.c_str(), svg_path.c_str());
   }

@@ -59,8 +59,7 @@ class Stencil_build_job : public Job
 public:
   Stencil_build_job(const Mesh& input, Scheme scheme, int levels, int threads)
     : m_input(input), m_scheme(scheme), m_levels(levels), m_threads(threads)
-  {
-  }
+  {}
   void prepare() override { m_table = Table(); }
   void run() override
   {
@@ -183,7 +182,10 @@ Job_ptr surface_mesh_resize_floor(const Input& input, Scheme scheme, int levels)
   return std::make_unique<Resize_floor_job>(input.mesh, scheme, levels);
 }
 
-bool ours_has_threads() { return has_threads; }
+bool ours_has_threads()
+{
+  return has_threads;
+}
 
 bool ours_with_tbb()
 {
@@ -200,14 +202,14 @@ Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threa
     return nullptr;
   const auto np = with_threads(threads, CGAL::parameters::number_of_iterations(levels));
   switch(scheme) {
-  case Scheme::loop:
-    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np); });
-  case Scheme::catmull_clark:
-    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::catmull_clark_subdivision(m, np); });
-  case Scheme::doo_sabin:
-    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::doo_sabin_subdivision(m, np); });
-  case Scheme::sqrt3:
-    return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::sqrt3_subdivision(m, np); });
+    case Scheme::loop:
+      return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np); });
+    case Scheme::catmull_clark:
+      return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::catmull_clark_subdivision(m, np); });
+    case Scheme::doo_sabin:
+      return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::doo_sabin_subdivision(m, np); });
+    case Scheme::sqrt3:
+      return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::sqrt3_subdivision(m, np); });
   }
   return nullptr;
 }
@@ -217,14 +219,14 @@ Job_ptr cgal_refinement(const Input& input, Scheme scheme, int levels)
   namespace SM = CGAL::Subdivision_method_3;
   const auto np = CGAL::parameters::number_of_iterations(levels);
   switch(scheme) {
-  case Scheme::loop:
-    return mesh_job(input.mesh, [np](Mesh& m) { SM::Loop_subdivision(m, np); });
-  case Scheme::catmull_clark:
-    return mesh_job(input.mesh, [np](Mesh& m) { SM::CatmullClark_subdivision(m, np); });
-  case Scheme::doo_sabin:
-    return mesh_job(input.mesh, [np](Mesh& m) { SM::DooSabin_subdivision(m, np); });
-  case Scheme::sqrt3:
-    return mesh_job(input.mesh, [np](Mesh& m) { SM::Sqrt3_subdivision(m, np); });
+    case Scheme::loop:
+      return mesh_job(input.mesh, [np](Mesh& m) { SM::Loop_subdivision(m, np); });
+    case Scheme::catmull_clark:
+      return mesh_job(input.mesh, [np](Mesh& m) { SM::CatmullClark_subdivision(m, np); });
+    case Scheme::doo_sabin:
+      return mesh_job(input.mesh, [np](Mesh& m) { SM::DooSabin_subdivision(m, np); });
+    case Scheme::sqrt3:
+      return mesh_job(input.mesh, [np](Mesh& m) { SM::Sqrt3_subdivision(m, np); });
   }
   return nullptr;
 }

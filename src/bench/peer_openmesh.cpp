@@ -6,9 +6,9 @@
 #include "libraries.h"
 
 #ifdef SUBDIV_BENCH_WITH_OPENMESH
+#include <OpenMesh/Core/System/config.h>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/config.h>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #endif
@@ -17,9 +17,18 @@ namespace subdiv_bench {
 
 #ifndef SUBDIV_BENCH_WITH_OPENMESH
 
-std::string openmesh_missing() { return "OpenMesh not found by CMake (Debian: libopenmesh-dev)"; }
-std::string openmesh_version() { return ""; }
-Job_ptr openmesh_refinement(const Soup&, Scheme, int) { return nullptr; }
+std::string openmesh_missing()
+{
+  return "OpenMesh not found by CMake (Debian: libopenmesh-dev)";
+}
+std::string openmesh_version()
+{
+  return "";
+}
+Job_ptr openmesh_refinement(const Soup&, Scheme, int)
+{
+  return nullptr;
+}
 
 #else
 
@@ -75,7 +84,10 @@ private:
 
 } // namespace
 
-std::string openmesh_missing() { return ""; }
+std::string openmesh_missing()
+{
+  return "";
+}
 std::string openmesh_version()
 {
   return std::to_string(OM_GET_VER) + "." + std::to_string(OM_GET_MAJ) + "." + std::to_string(OM_GET_MIN);
@@ -90,8 +102,8 @@ Job_ptr openmesh_refinement(const Soup& input, Scheme scheme, int levels)
     return std::make_unique<Openmesh_job<Tri_mesh, OpenMesh::Subdivider::Uniform::LoopT<Tri_mesh, double>>>(input,
                                                                                                             levels);
   if(scheme == Scheme::catmull_clark)
-    return std::make_unique<
-      Openmesh_job<Poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT<Poly_mesh, double>>>(input, levels);
+    return std::make_unique<Openmesh_job<Poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT<Poly_mesh, double>>>(
+      input, levels);
   return nullptr;
 }
 

@@ -28,12 +28,30 @@ namespace subdiv_bench {
 
 #ifndef SUBDIV_BENCH_WITH_OSD
 
-std::string osd_missing() { return "OpenSubdiv not found by CMake (Debian: libosd-dev)"; }
-std::string osd_version() { return ""; }
-Job_ptr osd_refinement(const Soup&, Scheme, int) { return nullptr; }
-Job_ptr osd_stencil_build(const Soup&, Scheme, int, bool) { return nullptr; }
-Apply_ptr osd_apply(const Soup&, Scheme, int) { return nullptr; }
-Apply_ptr osd_apply_omp_float(const Soup&, Scheme, int) { return nullptr; }
+std::string osd_missing()
+{
+  return "OpenSubdiv not found by CMake (Debian: libosd-dev)";
+}
+std::string osd_version()
+{
+  return "";
+}
+Job_ptr osd_refinement(const Soup&, Scheme, int)
+{
+  return nullptr;
+}
+Job_ptr osd_stencil_build(const Soup&, Scheme, int, bool)
+{
+  return nullptr;
+}
+Apply_ptr osd_apply(const Soup&, Scheme, int)
+{
+  return nullptr;
+}
+Apply_ptr osd_apply_omp_float(const Soup&, Scheme, int)
+{
+  return nullptr;
+}
 
 #else
 
@@ -112,7 +130,8 @@ public:
   void run() override
   {
     m_refiner = m_topology.refine(m_levels);
-    m_points.resize(static_cast<std::size_t>(m_refiner->GetNumVerticesTotal() - m_refiner->GetLevel(0).GetNumVertices()));
+    m_points.resize(
+      static_cast<std::size_t>(m_refiner->GetNumVerticesTotal() - m_refiner->GetLevel(0).GetNumVertices()));
     const Far::PrimvarRefinerReal<double> primvar(*m_refiner);
     const Vertex* source = m_topology.coarse().data();
     Vertex* destination = m_points.data();
@@ -147,8 +166,7 @@ class Stencil_build_job : public Job
 public:
   Stencil_build_job(const Soup& soup, Scheme scheme, int levels, bool factory_only)
     : m_topology(soup, scheme), m_levels(levels), m_factory_only(factory_only)
-  {
-  }
+  {}
   void prepare() override
   {
     m_table.reset();
@@ -256,7 +274,10 @@ private:
   int m_threads = 1;
 };
 
-bool has_scheme(Scheme scheme) { return scheme == Scheme::loop || scheme == Scheme::catmull_clark; }
+bool has_scheme(Scheme scheme)
+{
+  return scheme == Scheme::loop || scheme == Scheme::catmull_clark;
+}
 
 bool fits(const Soup& soup, Scheme scheme)
 {
@@ -271,7 +292,10 @@ bool fits(const Soup& soup, Scheme scheme)
 
 } // namespace
 
-std::string osd_missing() { return ""; }
+std::string osd_missing()
+{
+  return "";
+}
 std::string osd_version()
 {
   return std::to_string(OPENSUBDIV_VERSION_MAJOR) + "." + std::to_string(OPENSUBDIV_VERSION_MINOR) + "." +

@@ -111,10 +111,8 @@ std::string bar_chart_svg(const std::string& title, const std::string& axis, con
   // legend
   for(std::size_t s = 0; s < series.size(); ++s) {
     const int x = legend[s].first, y = legend[s].second;
-    svg << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"12\" height=\"12\" fill=\"" << colours[s % 6]
-        << "\"/>";
-    svg << "<text x=\"" << x + 16 << "\" y=\"" << y + 11 << "\" font-size=\"12\">" << escape(series[s])
-        << "</text>\n";
+    svg << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"12\" height=\"12\" fill=\"" << colours[s % 6] << "\"/>";
+    svg << "<text x=\"" << x + 16 << "\" y=\"" << y + 11 << "\" font-size=\"12\">" << escape(series[s]) << "</text>\n";
   }
   // grid and axis
   const int plot_bottom = top + static_cast<int>(groups.size()) * group_height;
@@ -146,12 +144,11 @@ std::string bar_chart_svg(const std::string& title, const std::string& axis, con
       std::snprintf(value, sizeof value, v >= 10 ? "%.0f" : "%.1f", v);
       svg << "<rect x=\"" << label_width << "\" y=\"" << y << "\" width=\"" << std::max(1.0, x_of(v) - label_width)
           << "\" height=\"" << bar - 1 << "\" fill=\"" << colours[s % 6] << "\"/>";
-      svg << "<text x=\"" << x_of(v) + 3 << "\" y=\"" << y + bar - 2 << "\" font-size=\"9\">" << value
-          << "</text>\n";
+      svg << "<text x=\"" << x_of(v) + 3 << "\" y=\"" << y + bar - 2 << "\" font-size=\"9\">" << value << "</text>\n";
     }
   }
-  svg << "<line x1=\"" << label_width << "\" y1=\"" << top - 4 << "\" x2=\"" << label_width << "\" y2=\""
-      << plot_bottom << "\" stroke=\"black\"/>\n";
+  svg << "<line x1=\"" << label_width << "\" y1=\"" << top - 4 << "\" x2=\"" << label_width << "\" y2=\"" << plot_bottom
+      << "\" stroke=\"black\"/>\n";
   svg << "</svg>\n";
   return svg.str();
 }

@@ -16,8 +16,7 @@
 
 namespace subdiv_bench_fallback {
 struct No_threads_parameter
-{
-};
+{};
 template <class... Args>
 No_threads_parameter threads(Args&&...)
 {
@@ -35,9 +34,8 @@ auto threads_call(int n, const NP& np)
   return threads(n, np);
 }
 
-constexpr bool has_threads =
-  !std::is_same<decltype(threads_call(1, CGAL::parameters::default_values())),
-                subdiv_bench_fallback::No_threads_parameter>::value;
+constexpr bool has_threads = !std::is_same<decltype(threads_call(1, CGAL::parameters::default_values())),
+                                           subdiv_bench_fallback::No_threads_parameter>::value;
 
 /// np with `threads(n)` added when the library has it
 template <class NP>

@@ -65,7 +65,7 @@ are one line on stderr: "cgal-subdiv: error: ...".
 )";
 
 const std::vector<Option_spec> analyse_options = {
-  {{"--scheme"}, true}, {{"--valence"}, true}, {{"--boundary"}, false}, {{"--degree"}, true}, {{"--a"}, true},
+  {{"--scheme"}, true}, {{"--valence"}, true}, {{"--boundary"}, false}, {{"--degree"}, true},     {{"--a"}, true},
   {{"--b"}, true},      {{"--w"}, true},       {{"--json"}, false},     {{"-h", "--help"}, false}};
 
 const char* const curve_keywords[] = {"bezier", "bspline", "chaikin", "corner-cutting", "four-point"};
@@ -141,7 +141,10 @@ std::string spectrum_text(const std::vector<std::complex<double>>& values,
   return text;
 }
 
-std::string yes_no(bool b) { return b ? "yes" : "no"; }
+std::string yes_no(bool b)
+{
+  return b ? "yes" : "no";
+}
 
 void row(std::ostream& out, const std::string& key, const std::string& value)
 {
@@ -159,26 +162,25 @@ void print_surface_table(const Surface_summary& s, std::ostream& out)
 {
   const std::string where = s.boundary && s.face_centred
                               ? "the border face made from a border vertex with " + std::to_string(s.valence) + " faces"
-                            : s.boundary ? "a border vertex with " + std::to_string(s.valence) + " faces"
+                            : s.boundary     ? "a border vertex with " + std::to_string(s.valence) + " faces"
                             : s.face_centred ? "an interior face with " + std::to_string(s.valence) + " corners"
                                              : "an interior vertex of valence " + std::to_string(s.valence);
   out << s.name << " (" << s.scheme << ") at " << where << "\n";
-  row(out, "neighbourhood", std::to_string(s.rings) + (s.rings == 1 ? " ring, " : " rings, ") +
-                              std::to_string(s.ring.size()) + " vertices (local matrix " +
-                              std::to_string(s.ring.size()) + " x " + std::to_string(s.ring.size()) + ")");
-  row(out, "weights", s.exact ? "exact (every weight rational)"
-                              : "some weights irrational: their nearest doubles, converted exactly");
+  row(out, "neighbourhood",
+      std::to_string(s.rings) + (s.rings == 1 ? " ring, " : " rings, ") + std::to_string(s.ring.size()) +
+        " vertices (local matrix " + std::to_string(s.ring.size()) + " x " + std::to_string(s.ring.size()) + ")");
+  row(out, "weights",
+      s.exact ? "exact (every weight rational)" : "some weights irrational: their nearest doubles, converted exactly");
   row(out, "rows sum to 1", yes_no(s.rows_sum_to_one));
   row(out, "eigenvalues", spectrum_text(s.eigenvalues, s.exact_eigenvalues, 12));
   row(out, "1 simple and dominant", yes_no(s.one_is_simple_and_dominant));
-  row(out, "subdominant", complex_text(s.subdominant) + ", multiplicity " +
-                            std::to_string(s.subdominant_multiplicity));
+  row(out, "subdominant", complex_text(s.subdominant) + ", multiplicity " + std::to_string(s.subdominant_multiplicity));
   row(out, "C1 necessary condition",
-      yes_no(s.c1_necessary) + (s.boundary ? " (lambda1 >= lambda2 > |lambda3|, both real)"
-                                           : " (lambda1 = lambda2 real > |lambda3|)"));
-  row(out, "extended spectrum", std::string(s.extended_spectrum_ok ? "ok" : "not ok") + " (" +
-                                  std::to_string(s.extended_rings) + " rings: largest other |lambda| " +
-                                  number_text(s.extended_largest_other) + ")");
+      yes_no(s.c1_necessary) +
+        (s.boundary ? " (lambda1 >= lambda2 > |lambda3|, both real)" : " (lambda1 = lambda2 real > |lambda3|)"));
+  row(out, "extended spectrum",
+      std::string(s.extended_spectrum_ok ? "ok" : "not ok") + " (" + std::to_string(s.extended_rings) +
+        " rings: largest other |lambda| " + number_text(s.extended_largest_other) + ")");
   std::string map = s.characteristic_map;
   if(s.characteristic_map_levels > 0 && s.characteristic_map != "not_applicable")
     map += " (" + std::to_string(s.characteristic_map_levels) + " levels, annulus of rings " +
@@ -200,9 +202,10 @@ void print_surface_table(const Surface_summary& s, std::ostream& out)
       row(out, "tangent mask " + std::to_string(t + 1), weights);
     }
   if(s.limit_error >= 0)
-    row(out, "limit check", "refined " + std::to_string(s.host_levels) + " + " + std::to_string(s.cropped_levels) +
-                              " levels: distance to the predicted limit " + number_text(s.limit_error) +
-                              " (relative to the neighbourhood)");
+    row(out, "limit check",
+        "refined " + std::to_string(s.host_levels) + " + " + std::to_string(s.cropped_levels) +
+          " levels: distance to the predicted limit " + number_text(s.limit_error) +
+          " (relative to the neighbourhood)");
 }
 
 void print_curve_table(const Curve_summary& s, std::ostream& out)
@@ -229,11 +232,14 @@ void print_curve_table(const Curve_summary& s, std::ostream& out)
   std::string mask;
   for(const Exact& w : s.limit_mask)
     mask += (mask.empty() ? "" : ", ") + format_exact(w);
-  row(out, "limit mask", mask.empty() ? "none (1 is not a simple eigenvalue)"
-                                      : mask + " (offsets " + std::to_string(s.window_first) + ".." +
-                                          std::to_string(s.window_last) + ")");
+  row(out, "limit mask",
+      mask.empty() ? "none (1 is not a simple eigenvalue)"
+                   : mask + " (offsets " + std::to_string(s.window_first) + ".." + std::to_string(s.window_last) + ")");
   row(out, "smoothness", smoothness_text(s));
-  row(out, "Holder exponent", s.c_infinity ? "infinite" : s.smoothness < 0 ? "-" : ">= " + number_text(s.holder_exponent));
+  row(out, "Holder exponent",
+      s.c_infinity       ? "infinite"
+      : s.smoothness < 0 ? "-"
+                         : ">= " + number_text(s.holder_exponent));
   row(out, "predicted rate", number_text(s.predicted_rate));
 }
 
@@ -252,7 +258,10 @@ std::string json_eigenvalues(const std::vector<std::complex<double>>& values)
   return text + "]";
 }
 
-const char* json_bool(bool b) { return b ? "true" : "false"; }
+const char* json_bool(bool b)
+{
+  return b ? "true" : "false";
+}
 
 void print_surface_json(const Surface_summary& s, std::ostream& out)
 {
@@ -280,13 +289,18 @@ void print_curve_json(const Curve_summary& s, const Scheme_spec& spec, std::ostr
 {
   std::string parameters;
   switch(spec.kind) {
-  case Scheme_kind::bezier:
-  case Scheme_kind::bspline: parameters = "\"degree\": " + std::to_string(spec.degree); break;
-  case Scheme_kind::corner_cutting:
-    parameters = "\"a\": " + json_number(nearest_double(spec.a)) + ", \"b\": " + json_number(nearest_double(spec.b));
-    break;
-  case Scheme_kind::four_point: parameters = "\"w\": " + json_number(nearest_double(spec.w)); break;
-  case Scheme_kind::chaikin: break;
+    case Scheme_kind::bezier:
+    case Scheme_kind::bspline:
+      parameters = "\"degree\": " + std::to_string(spec.degree);
+      break;
+    case Scheme_kind::corner_cutting:
+      parameters = "\"a\": " + json_number(nearest_double(spec.a)) + ", \"b\": " + json_number(nearest_double(spec.b));
+      break;
+    case Scheme_kind::four_point:
+      parameters = "\"w\": " + json_number(nearest_double(spec.w));
+      break;
+    case Scheme_kind::chaikin:
+      break;
   }
   std::string offsets, weights, fractions;
   for(std::size_t i = 0; i < s.limit_mask.size(); ++i) {
@@ -310,7 +324,10 @@ void print_curve_json(const Curve_summary& s, const Scheme_spec& spec, std::ostr
       << "  \"converges\": " << json_bool(s.converges) << ",\n"
       << "  \"c_infinity\": " << json_bool(s.c_infinity) << ",\n"
       << "  \"smoothness\": " << (s.c_infinity ? std::string("null") : std::to_string(s.smoothness)) << ",\n"
-      << "  \"holder\": " << (s.c_infinity ? std::string("null") : proven ? json_number(s.holder_exponent) : "0")
+      << "  \"holder\": "
+      << (s.c_infinity ? std::string("null")
+          : proven     ? json_number(s.holder_exponent)
+                       : "0")
       << ",\n"
       << "  \"c1\": " << json_bool(s.c_infinity || s.smoothness >= 1) << ",\n"
       << "  \"predicted_rate\": " << json_number(s.predicted_rate) << ",\n"
@@ -321,8 +338,8 @@ void print_curve_json(const Curve_summary& s, const Scheme_spec& spec, std::ostr
 Scheme_spec parse_curve_spec(const Parsed_args& args, const std::string& name)
 {
   Scheme_spec spec;
-  for(Scheme_kind kind : {Scheme_kind::bezier, Scheme_kind::bspline, Scheme_kind::chaikin,
-                          Scheme_kind::corner_cutting, Scheme_kind::four_point})
+  for(Scheme_kind kind : {Scheme_kind::bezier, Scheme_kind::bspline, Scheme_kind::chaikin, Scheme_kind::corner_cutting,
+                          Scheme_kind::four_point})
     if(name == curve_keywords[static_cast<int>(kind)])
       spec.kind = kind;
   require_applicable(args, "--degree", spec.kind == Scheme_kind::bspline || spec.kind == Scheme_kind::bezier,

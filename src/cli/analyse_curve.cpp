@@ -29,11 +29,16 @@ std::vector<std::pair<int, Exact>> terms_of(const S::Stencil<int, Exact>& stenci
 std::string keyword(Scheme_kind kind)
 {
   switch(kind) {
-  case Scheme_kind::bezier: return "bezier";
-  case Scheme_kind::bspline: return "bspline";
-  case Scheme_kind::chaikin: return "chaikin";
-  case Scheme_kind::corner_cutting: return "corner-cutting";
-  case Scheme_kind::four_point: return "four-point";
+    case Scheme_kind::bezier:
+      return "bezier";
+    case Scheme_kind::bspline:
+      return "bspline";
+    case Scheme_kind::chaikin:
+      return "chaikin";
+    case Scheme_kind::corner_cutting:
+      return "corner-cutting";
+    case Scheme_kind::four_point:
+      return "four-point";
   }
   return "";
 }

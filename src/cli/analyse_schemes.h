@@ -21,9 +21,9 @@ namespace cgal_subdiv {
 /// What the analysis knows about a surface scheme keyword.
 struct Surface_scheme_facts
 {
-  std::string keyword;       ///< "loop", ...
-  std::string split;         ///< "1-to-4 triangle split", ...
-  bool dual = false;         ///< centred at a face (Doo-Sabin)
+  std::string keyword; ///< "loop", ...
+  std::string split;   ///< "1-to-4 triangle split", ...
+  bool dual = false;   ///< centred at a face (Doo-Sabin)
   bool interpolating = false;
   bool border_analysis = false; ///< border vertices are analysed
 };
@@ -79,14 +79,14 @@ constexpr int max_analysed_valence = 32;
  *         valence out of range or a border vertex of a scheme whose border is
  *         not analysed
  */
-Surface_summary analyse_surface(const std::string& keyword, int valence, bool boundary,
-                                bool characteristic_map = true, bool verify_limit = true);
+Surface_summary analyse_surface(const std::string& keyword, int valence, bool boundary, bool characteristic_map = true,
+                                bool verify_limit = true);
 
 /// `CGAL::Subdiv::Curve_analysis<Exact_rational>` without the template
 struct Curve_summary
 {
-  std::string scheme;      ///< the keyword
-  std::string name;        ///< the scheme's name()
+  std::string scheme; ///< the keyword
+  std::string name;   ///< the scheme's name()
   int window_first = 0, window_last = 0;
   std::vector<std::vector<Exact>> matrix;
   std::vector<std::complex<double>> eigenvalues;
@@ -95,8 +95,8 @@ struct Curve_summary
   std::vector<Exact> limit_mask; ///< offsets window_first..window_last
   bool converges = false;
   bool c_infinity = false;
-  int smoothness = -1;         ///< largest proven k of C^k, -1 if none (meaningless if c_infinity)
-  double holder_exponent = 0;  ///< lower bound (meaningless if c_infinity)
+  int smoothness = -1;        ///< largest proven k of C^k, -1 if none (meaningless if c_infinity)
+  double holder_exponent = 0; ///< lower bound (meaningless if c_infinity)
   double predicted_rate = 0;
   /// the even and odd rules: (offset, weight); Bezier: the rows of the split matrix
   std::vector<std::vector<std::pair<int, Exact>>> rules;

@@ -94,8 +94,9 @@ Surface_summary analyse_surface(const std::string& keyword, int valence, bool bo
                                 bool verify_limit)
 {
   if(keyword == "linear")
-    throw Input_error("linear has no smoothness to analyse: its limit is the control mesh itself (C0); "
-                      "analyse one of the other surface schemes");
+    throw Input_error(
+      "linear has no smoothness to analyse: its limit is the control mesh itself (C0); "
+      "analyse one of the other surface schemes");
   const Surface_scheme_facts* facts = find_analysable_surface_scheme(keyword);
   if(!facts)
     throw Usage_error("unknown scheme '" + keyword + "'");
@@ -103,7 +104,7 @@ Surface_summary analyse_surface(const std::string& keyword, int valence, bool bo
     throw Input_error("border vertices of " + keyword + " are not analysed");
   const int low = boundary ? 1 : 3;
   if(valence < low || valence > max_analysed_valence) {
-    const std::string what = boundary ? "the number of faces at a border vertex"
+    const std::string what = boundary      ? "the number of faces at a border vertex"
                              : facts->dual ? "the number of corners of the central face"
                                            : "the valence of an interior vertex";
     throw Input_error(what + " must be between " + std::to_string(low) + " and " +

@@ -39,7 +39,7 @@ struct Input_polyline
 {
   int dimension = 2;
   std::vector<std::array<Exact, 3>> points; // third coordinate 0 in 2D
-  std::vector<std::string> notes;            // what was read and what was ignored
+  std::vector<std::string> notes;           // what was read and what was ignored
 };
 
 enum class Scheme_kind { bezier, bspline, chaikin, corner_cutting, four_point };

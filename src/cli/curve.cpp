@@ -8,16 +8,16 @@ namespace cgal_subdiv {
 std::string scheme_keyword(Scheme_kind kind)
 {
   switch(kind) {
-  case Scheme_kind::bezier:
-    return "bezier";
-  case Scheme_kind::bspline:
-    return "bspline";
-  case Scheme_kind::chaikin:
-    return "chaikin";
-  case Scheme_kind::corner_cutting:
-    return "corner-cutting";
-  case Scheme_kind::four_point:
-    return "four-point";
+    case Scheme_kind::bezier:
+      return "bezier";
+    case Scheme_kind::bspline:
+      return "bspline";
+    case Scheme_kind::chaikin:
+      return "chaikin";
+    case Scheme_kind::corner_cutting:
+      return "corner-cutting";
+    case Scheme_kind::four_point:
+      return "four-point";
   }
   return "?";
 }
@@ -25,16 +25,16 @@ std::string scheme_keyword(Scheme_kind kind)
 std::string describe(const Scheme_spec& scheme)
 {
   switch(scheme.kind) {
-  case Scheme_kind::bezier:
-    return "Bezier of degree " + std::to_string(scheme.degree);
-  case Scheme_kind::bspline:
-    return "B-spline of degree " + std::to_string(scheme.degree);
-  case Scheme_kind::chaikin:
-    return "Chaikin";
-  case Scheme_kind::corner_cutting:
-    return "corner cutting a=" + format_exact(scheme.a) + " b=" + format_exact(scheme.b);
-  case Scheme_kind::four_point:
-    return "four-point w=" + format_exact(scheme.w);
+    case Scheme_kind::bezier:
+      return "Bezier of degree " + std::to_string(scheme.degree);
+    case Scheme_kind::bspline:
+      return "B-spline of degree " + std::to_string(scheme.degree);
+    case Scheme_kind::chaikin:
+      return "Chaikin";
+    case Scheme_kind::corner_cutting:
+      return "corner cutting a=" + format_exact(scheme.a) + " b=" + format_exact(scheme.b);
+    case Scheme_kind::four_point:
+      return "four-point w=" + format_exact(scheme.w);
   }
   return "?";
 }

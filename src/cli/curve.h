@@ -20,8 +20,8 @@ struct Figure
   std::string title;
   bool closed = false;
   std::vector<std::vector<std::array<double, 2>>> levels; // levels[0]: control polygon
-  std::vector<double> curvature;                           // at the points of the last level
-  std::vector<double> arc_length;                          // at the same points, from the first
+  std::vector<double> curvature;                          // at the points of the last level
+  std::vector<double> arc_length;                         // at the same points, from the first
   bool has_curvature = false;
 };
 
@@ -31,13 +31,11 @@ struct Figure
  * if `figure` is not null, fills it. Returns the number of output points.
  * \throws CGAL::Subdiv::Bad_input, Input_error
  */
-std::size_t run_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out,
-                      Figure* figure);
+std::size_t run_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out, Figure* figure);
 
 /// run_curve() in one kernel; defined in curve_impl.h, instantiated in curve_*.cpp
 template <class Kernel>
-std::size_t compute_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out,
-                          Figure* figure);
+std::size_t compute_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out, Figure* figure);
 
 } // namespace cgal_subdiv
 

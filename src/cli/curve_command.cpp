@@ -73,11 +73,20 @@ out of range, an output too large for memory); 2 for a malformed command line
 one line on stderr: "cgal-subdiv: error: ...".
 )";
 
-const std::vector<Option_spec> curve_options = {
-  {{"-o", "--output"}, true}, {{"--scheme"}, true}, {{"--levels"}, true},  {{"--tolerance"}, true},
-  {{"--closed"}, false},      {{"--degree"}, true}, {{"--a"}, true},       {{"--b"}, true},
-  {{"--w"}, true},            {{"--end-rule"}, true}, {{"--exact"}, false}, {{"--svg"}, true},
-  {{"--report"}, false},      {{"-h", "--help"}, false}};
+const std::vector<Option_spec> curve_options = {{{"-o", "--output"}, true},
+                                                {{"--scheme"}, true},
+                                                {{"--levels"}, true},
+                                                {{"--tolerance"}, true},
+                                                {{"--closed"}, false},
+                                                {{"--degree"}, true},
+                                                {{"--a"}, true},
+                                                {{"--b"}, true},
+                                                {{"--w"}, true},
+                                                {{"--end-rule"}, true},
+                                                {{"--exact"}, false},
+                                                {{"--svg"}, true},
+                                                {{"--report"}, false},
+                                                {{"-h", "--help"}, false}};
 
 struct Curve_command
 {
@@ -90,8 +99,8 @@ struct Curve_command
 
 Scheme_kind parse_scheme_kind(const std::string& name)
 {
-  for(Scheme_kind kind : {Scheme_kind::bezier, Scheme_kind::bspline, Scheme_kind::chaikin,
-                          Scheme_kind::corner_cutting, Scheme_kind::four_point})
+  for(Scheme_kind kind : {Scheme_kind::bezier, Scheme_kind::bspline, Scheme_kind::chaikin, Scheme_kind::corner_cutting,
+                          Scheme_kind::four_point})
     if(name == scheme_keyword(kind))
       return kind;
   throw Usage_error("unknown scheme '" + name + "' (expected bezier, bspline, chaikin, corner-cutting or four-point)");

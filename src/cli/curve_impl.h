@@ -84,8 +84,7 @@ std::vector<Point> refine_once(const std::vector<Point>& points, const Scheme& s
                                  S::Bezier_options().number_of_iterations(1).closed(refine.closed));
   else
     return S::refine_polyline(
-      points, scheme,
-      S::Polyline_options().number_of_iterations(1).closed(refine.closed).end_rule(refine.end_rule));
+      points, scheme, S::Polyline_options().number_of_iterations(1).closed(refine.closed).end_rule(refine.end_rule));
 }
 
 // Bezier "enough subdivisions": split until every segment is flat
@@ -170,8 +169,7 @@ std::size_t compute(const Curve_job& job, const Input_polyline& input, std::ostr
 } // namespace curve_impl
 
 template <class Kernel>
-std::size_t compute_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out,
-                          Figure* figure)
+std::size_t compute_curve(const Curve_job& job, const Input_polyline& input, std::ostream& points_out, Figure* figure)
 {
   if(input.dimension == 3)
     return curve_impl::compute<typename Kernel::Point_3>(job, input, points_out, figure);

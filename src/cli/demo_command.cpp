@@ -90,8 +90,8 @@ std::vector<Demo_case> demo_cases()
 {
   std::vector<Demo_case> cases;
   for(int degree = 1; degree <= 5; ++degree)
-    cases.push_back(with_degree(make_case("bspline-" + std::to_string(degree) + "-closed", Scheme_kind::bspline, true),
-                                degree));
+    cases.push_back(
+      with_degree(make_case("bspline-" + std::to_string(degree) + "-closed", Scheme_kind::bspline, true), degree));
   cases.push_back(make_case("bspline-3-open", Scheme_kind::bspline, false));
   cases.push_back(keeping_ends(make_case("bspline-3-open-keep-ends", Scheme_kind::bspline, false)));
   cases.push_back(make_case("chaikin-closed", Scheme_kind::chaikin, true));
@@ -264,9 +264,8 @@ int demo_command(const std::vector<std::string>& arguments, const std::string& p
     rows.push_back(run_case(c, input, dir));
     failures += rows.back().failure.empty() ? 0 : 1;
   }
-  const std::vector<Demo_mesh> meshes = {
-    Demo_mesh{"torus", find_bundled("torus.off", program_path, ""), true},
-    Demo_mesh{"house", find_bundled("house.off", program_path, ""), false}};
+  const std::vector<Demo_mesh> meshes = {Demo_mesh{"torus", find_bundled("torus.off", program_path, ""), true},
+                                         Demo_mesh{"house", find_bundled("house.off", program_path, ""), false}};
   const std::vector<Surface_demo_row> surface_rows = run_surface_demo(meshes, dir);
   std::size_t surface_failures = 0;
   for(const Surface_demo_row& r : surface_rows)

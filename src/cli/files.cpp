@@ -3,13 +3,13 @@
 #include "files.h"
 #include "numbers.h"
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace cgal_subdiv {
 namespace {
@@ -87,13 +87,13 @@ Input_polyline read_plain(const std::string& path, const std::vector<Data_line>&
       throw Input_error(path + ":" + std::to_string(line.number) + ": cannot parse \"" + line.text +
                         "\": a point has 2 or 3 coordinates, this line has " + std::to_string(n));
     if(n != result.dimension)
-      throw Input_error(path + ":" + std::to_string(line.number) + ": cannot parse \"" + line.text + "\": " +
-                        std::to_string(n) + " coordinates, but the first point has " +
+      throw Input_error(path + ":" + std::to_string(line.number) + ": cannot parse \"" + line.text +
+                        "\": " + std::to_string(n) + " coordinates, but the first point has " +
                         std::to_string(result.dimension));
     std::array<Exact, 3> p{Exact(0), Exact(0), Exact(0)};
     for(int d = 0; d < n; ++d)
-      p[static_cast<std::size_t>(d)] = parse_coordinate(path, line.number, line.tokens[static_cast<std::size_t>(d)],
-                                                        line.text);
+      p[static_cast<std::size_t>(d)] =
+        parse_coordinate(path, line.number, line.tokens[static_cast<std::size_t>(d)], line.text);
     result.points.push_back(p);
   }
   return result;
@@ -131,8 +131,8 @@ std::string describe_rest(const std::vector<Token>& tokens, std::size_t pos)
            " vertices)";
   sizes.clear();
   if(read_polygon_sizes(tokens, pos, -1, sizes))
-    return "ignored " + std::to_string(sizes.size()) + " further polygon(s) after the first (" +
-           list_sizes(sizes) + " vertices)";
+    return "ignored " + std::to_string(sizes.size()) + " further polygon(s) after the first (" + list_sizes(sizes) +
+           " vertices)";
   return "ignored " + std::to_string(tokens.size() - pos) + " values after the first polygon (from line " +
          std::to_string(tokens[pos].line) + " on)";
 }

@@ -42,8 +42,14 @@ std::string format_exact(const Exact& x);
 std::string format_double(double x);
 
 /// the number in the form the output uses
-inline std::string format_number(const Exact& x) { return format_exact(x); }
-inline std::string format_number(double x) { return format_double(x); }
+inline std::string format_number(const Exact& x)
+{
+  return format_exact(x);
+}
+inline std::string format_number(double x)
+{
+  return format_double(x);
+}
 
 } // namespace cgal_subdiv
 

@@ -214,8 +214,8 @@ void write_comparison(const Measurements& levels, const Analysis& a, std::ostrea
 
 Report_summary write_report(const Curve_job& job, const Input_polyline& input, std::ostream& out)
 {
-  const Measurements levels = input.dimension == 3 ? measure<Double_kernel::Point_3>(job, input)
-                                                   : measure<Double_kernel::Point_2>(job, input);
+  const Measurements levels =
+    input.dimension == 3 ? measure<Double_kernel::Point_3>(job, input) : measure<Double_kernel::Point_2>(job, input);
   const Analysis analysis = analyse(job.scheme);
   out << "## " << describe(job.scheme) << ": " << describe(job.refine) << ", " << input.points.size()
       << " input points\n\n";
@@ -230,7 +230,10 @@ Report_summary write_report(const Curve_job& job, const Input_polyline& input, s
   return summary;
 }
 
-bool report_available() { return true; }
+bool report_available()
+{
+  return true;
+}
 
 } // namespace cgal_subdiv
 
@@ -240,11 +243,15 @@ namespace cgal_subdiv {
 
 Report_summary write_report(const Curve_job&, const Input_polyline&, std::ostream&)
 {
-  throw Input_error("this cgal-subdiv was built without the analysis layer "
-                    "(CGAL/Subdiv/analysis/curve_analysis.h): no --report");
+  throw Input_error(
+    "this cgal-subdiv was built without the analysis layer "
+    "(CGAL/Subdiv/analysis/curve_analysis.h): no --report");
 }
 
-bool report_available() { return false; }
+bool report_available()
+{
+  return false;
+}
 
 } // namespace cgal_subdiv
 

@@ -27,29 +27,27 @@ decltype(auto) with_scheme(const Scheme_spec& spec, F&& f)
 {
   namespace S = CGAL::Subdiv;
   switch(spec.kind) {
-  case Scheme_kind::bezier:
-    return f(S::Bezier_scheme<FT>(spec.degree));
-  case Scheme_kind::bspline:
-    return f(S::Uniform_bspline_scheme<FT>(spec.degree));
-  case Scheme_kind::chaikin:
-    return f(S::Chaikin_scheme<FT>());
-  case Scheme_kind::corner_cutting:
-    return f(S::Corner_cutting_scheme<FT>(to_ft<FT>(spec.a), to_ft<FT>(spec.b)));
-  case Scheme_kind::four_point:
-    return f(S::Four_point_scheme<FT>(to_ft<FT>(spec.w)));
+    case Scheme_kind::bezier:
+      return f(S::Bezier_scheme<FT>(spec.degree));
+    case Scheme_kind::bspline:
+      return f(S::Uniform_bspline_scheme<FT>(spec.degree));
+    case Scheme_kind::chaikin:
+      return f(S::Chaikin_scheme<FT>());
+    case Scheme_kind::corner_cutting:
+      return f(S::Corner_cutting_scheme<FT>(to_ft<FT>(spec.a), to_ft<FT>(spec.b)));
+    case Scheme_kind::four_point:
+      return f(S::Four_point_scheme<FT>(to_ft<FT>(spec.w)));
   }
   throw std::logic_error("unknown scheme kind");
 }
 
 template <class Scheme>
 struct Is_bezier : std::false_type
-{
-};
+{};
 
 template <class FT>
 struct Is_bezier<CGAL::Subdiv::Bezier_scheme<FT>> : std::true_type
-{
-};
+{};
 
 } // namespace cgal_subdiv
 

@@ -35,10 +35,14 @@ using Point = Double_kernel::Point_3;
 const char* format_name(Mesh_format format)
 {
   switch(format) {
-  case Mesh_format::off: return "OFF";
-  case Mesh_format::obj: return "OBJ";
-  case Mesh_format::ply: return "PLY";
-  case Mesh_format::stl: return "STL";
+    case Mesh_format::off:
+      return "OFF";
+    case Mesh_format::obj:
+      return "OBJ";
+    case Mesh_format::ply:
+      return "PLY";
+    case Mesh_format::stl:
+      return "STL";
   }
   return "?";
 }
@@ -159,7 +163,7 @@ std::string soup_problem(const std::vector<Point>& points, const std::vector<Pol
 // mesh is copied without them.
 bool has_extra_properties(const Surface& mesh)
 {
-  const std::set<std::string> internal = {"v:connectivity", "v:point", "v:removed", "h:connectivity",
+  const std::set<std::string> internal = {"v:connectivity", "v:point",        "v:removed", "h:connectivity",
                                           "e:removed",      "f:connectivity", "f:removed"};
   std::vector<std::string> names = mesh.properties<Surface::Vertex_index>();
   for(const auto& more : {mesh.properties<Surface::Halfedge_index>(), mesh.properties<Surface::Edge_index>(),
@@ -263,8 +267,9 @@ Surface read_surface(const std::string& path, bool repair, std::vector<std::stri
         said = quiet.first_line();
     }
     if(!soup || (points.empty() && polygons.empty()))
-      throw Input_error("cannot read '" + path + "' as " + format_name(format) + ": " +
-                        (said.empty() ? "CGAL's reader rejects it (malformed or truncated)" : "CGAL's reader says \"" + said + "\""));
+      throw Input_error(
+        "cannot read '" + path + "' as " + format_name(format) + ": " +
+        (said.empty() ? "CGAL's reader rejects it (malformed or truncated)" : "CGAL's reader says \"" + said + "\""));
     const std::string problem = soup_problem(points, polygons);
     throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
                       (repair ? "" : " (--repair makes one of it)"));
@@ -292,19 +297,25 @@ void write_surface(const Surface& mesh, const std::string& path)
   {
     Captured_cerr quiet;
     switch(format) {
-    case Mesh_format::off: ok = CGAL::IO::write_OFF(out, mesh, np); break;
-    case Mesh_format::obj: ok = CGAL::IO::write_OBJ(out, mesh, np); break;
-    case Mesh_format::ply: ok = CGAL::IO::write_PLY(out, mesh, np); break;
-    case Mesh_format::stl:
-      // STL holds triangles only: split the faces of a copy
-      if(CGAL::is_triangle_mesh(mesh)) {
-        ok = CGAL::IO::write_STL(out, mesh, np);
-      } else {
-        Surface triangles = mesh;
-        CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
-        ok = CGAL::IO::write_STL(out, triangles, np);
-      }
-      break;
+      case Mesh_format::off:
+        ok = CGAL::IO::write_OFF(out, mesh, np);
+        break;
+      case Mesh_format::obj:
+        ok = CGAL::IO::write_OBJ(out, mesh, np);
+        break;
+      case Mesh_format::ply:
+        ok = CGAL::IO::write_PLY(out, mesh, np);
+        break;
+      case Mesh_format::stl:
+        // STL holds triangles only: split the faces of a copy
+        if(CGAL::is_triangle_mesh(mesh)) {
+          ok = CGAL::IO::write_STL(out, mesh, np);
+        } else {
+          Surface triangles = mesh;
+          CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
+          ok = CGAL::IO::write_STL(out, triangles, np);
+        }
+        break;
     }
   }
   if(!ok)

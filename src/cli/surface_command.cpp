@@ -65,10 +65,9 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 --levels). Errors are one line on stderr: "cgal-subdiv: error: ...".
 )";
 
-const std::vector<Option_spec> surface_options = {{{"-o", "--output"}, true}, {{"--scheme"}, true},
-                                                  {{"--levels"}, true},       {{"--repair"}, false},
-                                                  {{"--limit"}, false},       {{"--displace"}, true},
-                                                  {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}};
+const std::vector<Option_spec> surface_options = {
+  {{"-o", "--output"}, true}, {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
+  {{"--limit"}, false},       {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -97,7 +96,8 @@ std::string surface_help()
 {
   std::string help = surface_help_head;
   for(const bool triangles : {true, false}) {
-    help += triangles ? "                        triangle meshes only:\n" : "                        any polygon mesh:\n";
+    help +=
+      triangles ? "                        triangle meshes only:\n" : "                        any polygon mesh:\n";
     for(const std::string& name : surface_scheme_keywords()) {
       const Surface_scheme* scheme = nullptr;
       for(const Surface_scheme& s : surface_schemes())
@@ -183,9 +183,11 @@ int surface_command(const std::vector<std::string>& arguments)
   for(const std::string& note : notes)
     std::cerr << "cgal-subdiv: note: " << note << '\n';
   std::cout << scheme.name << ", " << levels << (levels == 1 ? " level" : " levels")
-            << (displace ? ", displaced: " : args.has("--limit") ? ", limit: " : ": ") << describe(result.in)
-            << " -> " << describe(result.out) << " in " << seconds_text(result.seconds) << "; wrote " << output
-            << std::endl;
+            << (displace              ? ", displaced: "
+                : args.has("--limit") ? ", limit: "
+                                      : ": ")
+            << describe(result.in) << " -> " << describe(result.out) << " in " << seconds_text(result.seconds)
+            << "; wrote " << output << std::endl;
   return 0;
 }
 

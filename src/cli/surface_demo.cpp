@@ -51,8 +51,12 @@ std::vector<Surface_demo_row> run_surface_demo(const std::vector<Demo_mesh>& mes
     for(const Surface_scheme& scheme : surface_schemes()) {
       if(scheme.triangles_only && !input.triangles)
         continue;
-      Surface_demo_row row{"surface-" + scheme.name + "-" + input.label, scheme.name, input.label,
-                           surface_demo_levels, Surface_result(), read_failure};
+      Surface_demo_row row{"surface-" + scheme.name + "-" + input.label,
+                           scheme.name,
+                           input.label,
+                           surface_demo_levels,
+                           Surface_result(),
+                           read_failure};
       if(read_failure.empty()) {
         try {
           Surface mesh = original;
@@ -88,8 +92,8 @@ void write_surface_index(const std::vector<Surface_demo_row>& rows, const std::v
       out << "failed: " << r.failure << " | | | |\n";
       continue;
     }
-    out << vf(r.result.in) << " | " << vf(r.result.out) << " | " << seconds_text(r.result.seconds) << " | ["
-        << r.name << ".off](" << r.name << ".off) |\n";
+    out << vf(r.result.in) << " | " << vf(r.result.out) << " | " << seconds_text(r.result.seconds) << " | [" << r.name
+        << ".off](" << r.name << ".off) |\n";
   }
   out << "\n";
 }
@@ -100,8 +104,7 @@ void print_surface_summary(const std::vector<Surface_demo_row>& rows)
               "time (s)");
   for(const Surface_demo_row& r : rows) {
     if(!r.failure.empty()) {
-      std::printf("%-36s %-20s %-7s failed: %s\n", r.name.c_str(), r.scheme.c_str(), r.mesh.c_str(),
-                  r.failure.c_str());
+      std::printf("%-36s %-20s %-7s failed: %s\n", r.name.c_str(), r.scheme.c_str(), r.mesh.c_str(), r.failure.c_str());
       continue;
     }
     std::printf("%-36s %-20s %-7s %6d %13s %15s %9s\n", r.name.c_str(), r.scheme.c_str(), r.mesh.c_str(), r.levels,

@@ -23,7 +23,6 @@ namespace cgal_subdiv {
  */
 std::vector<double> read_heights(const std::string& path, std::size_t vertices);
 
-
 /// moves every vertex of `mesh` to its limit position under `scheme`
 /// \throws CGAL::Subdiv::Bad_input when the analysis does not cover a vertex
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme);

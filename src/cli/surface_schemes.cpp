@@ -32,9 +32,9 @@ const auto linear = call([](Surface& m, const auto& np) {
 
 const std::vector<std::string>& surface_scheme_keywords()
 {
-  static const std::vector<std::string> keywords = {
-    "loop", "loop-warren", "catmull-clark", "doo-sabin", "sqrt3",
-    "butterfly", "modified-butterfly", "interpolating-sqrt3", "linear"};
+  static const std::vector<std::string> keywords = {"loop",  "loop-warren", "catmull-clark",      "doo-sabin",
+                                                    "sqrt3", "butterfly",   "modified-butterfly", "interpolating-sqrt3",
+                                                    "linear"};
   return keywords;
 }
 
@@ -42,15 +42,13 @@ const std::vector<Surface_scheme>& surface_schemes()
 {
   // name, description, run, triangles only, level by level, face growth per level
   static const std::vector<Surface_scheme> schemes = {
-    {"loop", "Loop, Loop's 1987 beta (as CGAL and OpenSubdiv)",
-     SUBDIV_CLI_WRAP(loop_subdivision), true, true, 4},
+    {"loop", "Loop, Loop's 1987 beta (as CGAL and OpenSubdiv)", SUBDIV_CLI_WRAP(loop_subdivision), true, true, 4},
     {"loop-warren", "Loop with Warren's rational beta", SUBDIV_CLI_WRAP(loop_warren_subdivision), true, true, 4},
-    {"catmull-clark", "Catmull-Clark (quads out)", SUBDIV_CLI_WRAP(catmull_clark_subdivision), false,
-     true, 4},
+    {"catmull-clark", "Catmull-Clark (quads out)", SUBDIV_CLI_WRAP(catmull_clark_subdivision), false, true, 4},
     {"doo-sabin", "Doo-Sabin (the dual scheme)", SUBDIV_CLI_WRAP(doo_sabin_subdivision), false, true, 4},
     {"sqrt3", "Kobbelt's sqrt3", SUBDIV_CLI_WRAP(sqrt3_subdivision), true, true, 3},
-    {"butterfly", "butterfly (Dyn, Levin, Gregory), interpolating", SUBDIV_CLI_WRAP(butterfly_subdivision), true,
-     true, 4},
+    {"butterfly", "butterfly (Dyn, Levin, Gregory), interpolating", SUBDIV_CLI_WRAP(butterfly_subdivision), true, true,
+     4},
     {"modified-butterfly", "modified butterfly (Zorin, Schroeder, Sweldens), interpolating",
      SUBDIV_CLI_WRAP(modified_butterfly_subdivision), true, true, 4},
     {"interpolating-sqrt3", "Labsik and Greiner's interpolating sqrt3",

@@ -43,10 +43,17 @@ std::string escape(const std::string& text)
   std::string result;
   for(char c : text) {
     switch(c) {
-    case '<': result += "&lt;"; break;
-    case '>': result += "&gt;"; break;
-    case '&': result += "&amp;"; break;
-    default: result += c;
+      case '<':
+        result += "&lt;";
+        break;
+      case '>':
+        result += "&gt;";
+        break;
+      case '&':
+        result += "&amp;";
+        break;
+      default:
+        result += c;
     }
   }
   return result;
@@ -61,7 +68,8 @@ std::string level_colour(std::size_t k, std::size_t count)
   const int i = u >= 1 ? 1 : 0;
   const double s = u - i;
   char buffer[16];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", static_cast<int>(stops[i][0] + s * (stops[i + 1][0] - stops[i][0])),
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x",
+                static_cast<int>(stops[i][0] + s * (stops[i + 1][0] - stops[i][0])),
                 static_cast<int>(stops[i][1] + s * (stops[i + 1][1] - stops[i][1])),
                 static_cast<int>(stops[i][2] + s * (stops[i + 1][2] - stops[i][2])));
   return buffer;
@@ -88,7 +96,8 @@ public:
 
   Point operator()(const Point& p) const
   {
-    return {page_width / 2 + (p[0] - m_centre[0]) * m_scale, curve_top + curve_height / 2 - (p[1] - m_centre[1]) * m_scale};
+    return {page_width / 2 + (p[0] - m_centre[0]) * m_scale,
+            curve_top + curve_height / 2 - (p[1] - m_centre[1]) * m_scale};
   }
 
 private:
@@ -132,7 +141,8 @@ void write_header_and_legend(const Figure& figure, std::ostream& out)
 {
   const std::size_t levels = figure.levels.size() - 1;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << page_width << "\" height=\"" << page_height
-      << "\" viewBox=\"0 0 " << page_width << " " << page_height << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
+      << "\" viewBox=\"0 0 " << page_width << " " << page_height
+      << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
       << "  <style>.small{font-size:12px;fill:#333}.title{font-size:17px;fill:#111}</style>\n"
       << "  <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "  <text x=\"" << margin << "\" y=\"30\" class=\"title\">" << escape(figure.title) << "</text>\n";
@@ -156,14 +166,16 @@ void write_curves(const Figure& figure, std::ostream& out)
   const std::size_t levels = figure.levels.size() - 1;
   out << "  <rect x=\"" << margin << "\" y=\"" << curve_top << "\" width=\"" << page_width - 2 * margin
       << "\" height=\"" << curve_height << "\" fill=\"#fcfcfc\" stroke=\"#e3e3e3\"/>\n";
-  polyline(out, figure.levels.front(), figure.closed, view,
-           std::string("fill=\"none\" stroke=\"") + control_colour + "\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"");
+  polyline(
+    out, figure.levels.front(), figure.closed, view,
+    std::string("fill=\"none\" stroke=\"") + control_colour + "\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"");
   for(std::size_t k = 1; k < levels; ++k)
     polyline(out, figure.levels[k], figure.closed, view,
              "fill=\"none\" stroke=\"" + level_colour(k, levels - 1) + "\" stroke-width=\"1\" stroke-opacity=\"0.9\"");
   if(levels >= 1)
-    polyline(out, figure.levels.back(), figure.closed, view,
-             std::string("fill=\"none\" stroke=\"") + final_colour + "\" stroke-width=\"2.5\" stroke-linejoin=\"round\"");
+    polyline(
+      out, figure.levels.back(), figure.closed, view,
+      std::string("fill=\"none\" stroke=\"") + final_colour + "\" stroke-width=\"2.5\" stroke-linejoin=\"round\"");
   for(const Point& p : figure.levels.front()) {
     const Point q = view(p);
     out << "  <circle cx=\"" << fixed(q[0]) << "\" cy=\"" << fixed(q[1]) << "\" r=\"3.5\" fill=\"" << control_colour
@@ -173,7 +185,8 @@ void write_curves(const Figure& figure, std::ostream& out)
   const Point start = view(figure.levels.back().front());
   out << "  <circle cx=\"" << fixed(start[0]) << "\" cy=\"" << fixed(start[1]) << "\" r=\"6\" fill=\"none\" stroke=\""
       << final_colour << "\" stroke-width=\"1.5\"/>\n"
-      << "  <text x=\"" << fixed(start[0] + 9) << "\" y=\"" << fixed(start[1] - 9) << "\" class=\"small\">start</text>\n";
+      << "  <text x=\"" << fixed(start[0] + 9) << "\" y=\"" << fixed(start[1] - 9)
+      << "\" class=\"small\">start</text>\n";
 }
 
 void write_curvature_plot(const Figure& figure, std::ostream& out)
@@ -199,10 +212,11 @@ void write_curvature_plot(const Figure& figure, std::ostream& out)
     graph.push_back({figure.arc_length[i], figure.curvature[i]});
   graph.push_back({figure.arc_length.back(), 0});
   out << "  <polygon points=\"" << point_list(graph, map) << "\" fill=\"" << final_colour
-      << "\" fill-opacity=\"0.12\" stroke=\"" << final_colour << "\" stroke-width=\"1.2\" stroke-linejoin=\"round\"/>\n";
+      << "\" fill-opacity=\"0.12\" stroke=\"" << final_colour
+      << "\" stroke-width=\"1.2\" stroke-linejoin=\"round\"/>\n";
   const auto label = [&](double x, double y, const std::string& anchor, const std::string& text) {
-    out << "  <text x=\"" << fixed(x) << "\" y=\"" << fixed(y) << "\" class=\"small\" text-anchor=\"" << anchor
-        << "\">" << text << "</text>\n";
+    out << "  <text x=\"" << fixed(x) << "\" y=\"" << fixed(y) << "\" class=\"small\" text-anchor=\"" << anchor << "\">"
+        << text << "</text>\n";
   };
   label(plot_left - 6, bottom, "end", "0");
   label(plot_left - 6, plot_top + 12, "end", short_number(top));

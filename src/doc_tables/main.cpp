@@ -58,8 +58,14 @@ std::string complex_text(const std::complex<double>& z)
   return num(z.real()) + (z.imag() < 0 ? "-" : "+") + num(std::abs(z.imag())) + "i";
 }
 
-std::string fraction(const Exact& x) { return cgal_subdiv::format_exact(x); }
-double to_double(const Exact& x) { return cgal_subdiv::nearest_double(x); }
+std::string fraction(const Exact& x)
+{
+  return cgal_subdiv::format_exact(x);
+}
+double to_double(const Exact& x)
+{
+  return cgal_subdiv::nearest_double(x);
+}
 
 // a weight: the exact fraction, or "≈" and 12 digits for a rounded irrational one
 std::string weight_text(const Exact& w, bool rational)
@@ -85,7 +91,10 @@ std::string csv_row(const std::vector<std::string>& fields)
   return row + "\n";
 }
 
-std::string yes_no(bool b) { return b ? "yes" : "no"; }
+std::string yes_no(bool b)
+{
+  return b ? "yes" : "no";
+}
 
 // "3..5, 7, 9..16" from a sorted list
 std::string ranges(const std::vector<int>& values)
@@ -175,8 +184,8 @@ std::string rule_text(const Rule& rule, bool face_centred)
     if(r == 0 && !face_centred)
       part = "centre " + weight_text(terms.front()->weight, terms.front()->rational);
     else
-      part = (r == 0 ? std::string("corners: ") : "ring " + std::to_string(r) + ": ") +
-             ring_text(terms, rule.ring_sizes[r]);
+      part =
+        (r == 0 ? std::string("corners: ") : "ring " + std::to_string(r) + ": ") + ring_text(terms, rule.ring_sizes[r]);
     text += (text.empty() ? "" : "; ") + part;
   }
   return text;
@@ -208,15 +217,18 @@ int regular_valence(const Scheme_tables& t)
   return 6;
 }
 
-std::string where(const Scheme_tables& t) { return t.facts->dual ? "n (corners of the face)" : "n"; }
+std::string where(const Scheme_tables& t)
+{
+  return t.facts->dual ? "n (corners of the face)" : "n";
+}
 
 std::string eigen_row(const Surface_summary& s)
 {
   const double third = s.eigenvalues.size() > 3 ? std::abs(s.eigenvalues[3]) : 0.0;
   std::string map = s.characteristic_map;
   return "| " + std::to_string(s.valence) + " | " + std::to_string(s.ring.size()) + " | " + yes_no(s.exact) + " | " +
-         complex_text(s.subdominant) + " | " + std::to_string(s.subdominant_multiplicity) + " | " + num(third) +
-         " | " + yes_no(s.c1_necessary) + " | " + (s.extended_spectrum_ok ? "ok" : "no") + " (" +
+         complex_text(s.subdominant) + " | " + std::to_string(s.subdominant_multiplicity) + " | " + num(third) + " | " +
+         yes_no(s.c1_necessary) + " | " + (s.extended_spectrum_ok ? "ok" : "no") + " (" +
          num(s.extended_largest_other, 6) + ") | " + map + " | **" + (s.c1 ? "C1" : "not C1") + "** |\n";
 }
 
@@ -300,7 +312,8 @@ void write_scheme(const Scheme_tables& t, Output& out)
     if(by_config.empty())
       return;
     for(std::size_t r = 0; r < by_config.front().size(); ++r) {
-      md << "### " << by_config.front()[r].name << " rule\n\n" << by_config.front()[r].description << ".\n\n"
+      md << "### " << by_config.front()[r].name << " rule\n\n"
+         << by_config.front()[r].description << ".\n\n"
          << "| " << label << " | weights |\n|---:|---|\n";
       for(std::size_t c = 0; c < by_config.size(); ++c)
         if(r < by_config[c].size())
@@ -334,13 +347,14 @@ void write_scheme(const Scheme_tables& t, Output& out)
          << " | " << tangent_text(s, 1) << " | " << check_text(s) << " |\n";
     md << "\n";
   };
-  analysis_tables(t.interior, t.facts->dual ? "Eigen-analysis at faces with n corners"
-                                            : "Eigen-analysis at interior vertices",
+  analysis_tables(t.interior,
+                  t.facts->dual ? "Eigen-analysis at faces with n corners" : "Eigen-analysis at interior vertices",
                   where(t));
-  analysis_tables(t.border, t.facts->dual ? "Eigen-analysis at border faces made from border vertices with k faces "
-                                           "(k >= 3: the vertex face, a border k-gon; k = 2: a border quad of the "
-                                           "regular border; k = 1: the corner face)"
-                                         : "Eigen-analysis at border vertices with k faces",
+  analysis_tables(t.border,
+                  t.facts->dual ? "Eigen-analysis at border faces made from border vertices with k faces "
+                                  "(k >= 3: the vertex face, a border k-gon; k = 2: a border quad of the "
+                                  "regular border; k = 1: the corner face)"
+                                : "Eigen-analysis at border vertices with k faces",
                   "k");
   if(t.border.empty())
     md << "Border vertices: not analysed.\n";
@@ -356,8 +370,8 @@ void write_surface_csv(const std::vector<Scheme_tables>& all, Output& out)
                        "abs_lambda3", "c1_necessary", "extended_spectrum_ok", "characteristic_map", "c1",
                        "limit_centre"});
   eigen << csv_row({"scheme", "boundary", "valence", "index", "re", "im"});
-  masks << csv_row({"scheme", "boundary", "valence", "label", "ring", "limit", "limit_fraction", "tangent1",
-                    "tangent2"});
+  masks << csv_row(
+    {"scheme", "boundary", "valence", "label", "ring", "limit", "limit_fraction", "tangent1", "tangent2"});
   rules << csv_row({"scheme", "rule", "boundary", "valence", "label", "ring", "weight", "fraction"});
   for(const Scheme_tables& t : all)
     for(const auto* configs : {&t.interior, &t.border})
@@ -373,8 +387,8 @@ void write_surface_csv(const std::vector<Scheme_tables>& all, Output& out)
           eigen << csv_row({s.scheme, b, n, std::to_string(i), num(s.eigenvalues[i].real()),
                             num(std::abs(s.eigenvalues[i].imag()) < 1e-9 ? 0.0 : s.eigenvalues[i].imag())});
         for(std::size_t i = 0; i < s.limit_mask.size(); ++i)
-          masks << csv_row({s.scheme, b, n, std::to_string(i), std::to_string(s.ring[i]),
-                            num(s.limit_mask_double[i]), s.exact ? fraction(s.limit_mask[i]) : "",
+          masks << csv_row({s.scheme, b, n, std::to_string(i), std::to_string(s.ring[i]), num(s.limit_mask_double[i]),
+                            s.exact ? fraction(s.limit_mask[i]) : "",
                             s.c1_necessary && !s.tangent_mask[0].empty() ? num(s.tangent_mask[0][i], 6) : "",
                             s.c1_necessary && !s.tangent_mask[1].empty() ? num(s.tangent_mask[1][i], 6) : ""});
       }
@@ -408,11 +422,16 @@ Scheme_spec curve_spec(Scheme_kind kind, int degree = 3, Exact a = Exact(1) / 4,
 std::string curve_label(const Scheme_spec& spec)
 {
   switch(spec.kind) {
-  case Scheme_kind::bezier: return "bezier, degree " + std::to_string(spec.degree);
-  case Scheme_kind::bspline: return "bspline, degree " + std::to_string(spec.degree);
-  case Scheme_kind::chaikin: return "chaikin";
-  case Scheme_kind::corner_cutting: return "corner-cutting, a = " + fraction(spec.a) + ", b = " + fraction(spec.b);
-  case Scheme_kind::four_point: return "four-point, w = " + fraction(spec.w);
+    case Scheme_kind::bezier:
+      return "bezier, degree " + std::to_string(spec.degree);
+    case Scheme_kind::bspline:
+      return "bspline, degree " + std::to_string(spec.degree);
+    case Scheme_kind::chaikin:
+      return "chaikin";
+    case Scheme_kind::corner_cutting:
+      return "corner-cutting, a = " + fraction(spec.a) + ", b = " + fraction(spec.b);
+    case Scheme_kind::four_point:
+      return "four-point, w = " + fraction(spec.w);
   }
   return "";
 }
@@ -478,9 +497,15 @@ struct Overview_row
   std::vector<std::string> cells;
 };
 
-const std::vector<std::string> overview_header = {
-  "scheme", "kind", "primal or dual", "approximating or interpolating", "split",
-  "regular points (computed)", "extraordinary points (computed)", "border (computed)", "exact kernels"};
+const std::vector<std::string> overview_header = {"scheme",
+                                                  "kind",
+                                                  "primal or dual",
+                                                  "approximating or interpolating",
+                                                  "split",
+                                                  "regular points (computed)",
+                                                  "extraordinary points (computed)",
+                                                  "border (computed)",
+                                                  "exact kernels"};
 
 void write_curves(Output& out, std::vector<Overview_row>& overview)
 {
@@ -508,8 +533,8 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
   for(const Scheme_spec& spec : specs) {
     const Curve_summary s = analyse_curve(spec);
     md << "| " << curve_label(spec) << " | " << rule_terms(s.rules[0]) << " | " << rule_terms(s.rules[1]) << " | "
-       << curve_eigenvalues(s, 6) << " | " << limit_text(s) << " | " << smoothness_text(s) << " | "
-       << holder_text(s) << " | " << num(s.predicted_rate, 6) << " |\n";
+       << curve_eigenvalues(s, 6) << " | " << limit_text(s) << " | " << smoothness_text(s) << " | " << holder_text(s)
+       << " | " << num(s.predicted_rate, 6) << " |\n";
     std::string mask;
     for(const Exact& w : s.limit_mask)
       mask += (mask.empty() ? "" : " ") + fraction(w);
@@ -524,9 +549,10 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
                            smoothness_text(s) + (s.smoothness >= 0 ? ", Hölder >= " + holder_text(s) : ""),
                            "- (none on curves)", "open ends: see `End_rule`", "yes (rational weights)"}});
   }
-  md << "\n## Bezier subdivision (de Casteljau at t = 1/2)\n\n"
-     << "The matrix is the left half of the split (row j: new control point j); the limit is the "
-     << "polynomial curve, C^inf.\n\n| degree | left-half split rows | eigenvalues | limit mask |\n|---:|---|---|---|\n";
+  md
+    << "\n## Bezier subdivision (de Casteljau at t = 1/2)\n\n"
+    << "The matrix is the left half of the split (row j: new control point j); the limit is the "
+    << "polynomial curve, C^inf.\n\n| degree | left-half split rows | eigenvalues | limit mask |\n|---:|---|---|---|\n";
   for(int degree = 1; degree <= 5; ++degree) {
     const Curve_summary s = analyse_curve(curve_spec(Scheme_kind::bezier, degree));
     std::string rows;
@@ -535,8 +561,8 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
     md << "| " << degree << " | " << rows << " | " << curve_eigenvalues(s, 8) << " | " << limit_text(s) << " |\n";
     if(degree == 3)
       overview.push_back({{"bezier, any degree", "curve", "-", "approximating (interpolates the segment ends)",
-                           "de Casteljau midpoint split", "C^inf (polynomial)", "- (none on curves)", "segment ends kept",
-                           "yes (rational weights)"}});
+                           "de Casteljau midpoint split", "C^inf (polynomial)", "- (none on curves)",
+                           "segment ends kept", "yes (rational weights)"}});
   }
 
   // four-point over w
@@ -544,9 +570,8 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
      << "| w | eigenvalues | limit mask | smoothness | Hölder >= | predicted rate |\n|---:|---|---|---|---:|---:|\n";
   std::ostringstream& fp = out.file("four_point.csv");
   fp << csv_row({"w", "w_double", "lambda1", "lambda2", "lambda3", "smoothness", "holder", "predicted_rate"});
-  const std::vector<std::pair<int, int>> ws = {{0, 1},  {1, 64}, {1, 32}, {3, 64}, {1, 16}, {5, 64},
-                                               {3, 32}, {1, 10}, {1, 8},  {3, 20}, {4, 25}, {1, 6},
-                                               {3, 16}, {1, 5},  {9, 40}, {6, 25}};
+  const std::vector<std::pair<int, int>> ws = {{0, 1}, {1, 64}, {1, 32}, {3, 64}, {1, 16}, {5, 64}, {3, 32}, {1, 10},
+                                               {1, 8}, {3, 20}, {4, 25}, {1, 6},  {3, 16}, {1, 5},  {9, 40}, {6, 25}};
   for(const auto& pq : ws) {
     const Exact w = Exact(pq.first) / pq.second;
     const Curve_summary s = analyse_curve(curve_spec(Scheme_kind::four_point, 3, Exact(1) / 4, Exact(3) / 4, w));
@@ -554,8 +579,8 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
        << smoothness_text(s) << " | " << holder_text(s) << " | " << num(s.predicted_rate, 6) << " |\n";
     fp << csv_row({fraction(w), num(to_double(w), 17), s.eigenvalues.size() > 1 ? complex_text(s.eigenvalues[1]) : "",
                    s.eigenvalues.size() > 2 ? complex_text(s.eigenvalues[2]) : "",
-                   s.eigenvalues.size() > 3 ? complex_text(s.eigenvalues[3]) : "", smoothness_text(s),
-                   holder_text(s), num(s.predicted_rate, 6)});
+                   s.eigenvalues.size() > 3 ? complex_text(s.eigenvalues[3]) : "", smoothness_text(s), holder_text(s),
+                   num(s.predicted_rate, 6)});
   }
 
   // corner cutting over (a, b)
@@ -584,8 +609,8 @@ void write_curves(Output& out, std::vector<Overview_row>& overview)
       const Curve_summary s = analyse_curve(curve_spec(Scheme_kind::corner_cutting, 3, a, b));
       md << " " << smoothness_text(s) << " (" << holder_text(s) << ") |";
       cc << csv_row({fraction(a), fraction(b), s.eigenvalues.size() > 1 ? complex_text(s.eigenvalues[1]) : "",
-                     s.eigenvalues.size() > 2 ? complex_text(s.eigenvalues[2]) : "", smoothness_text(s),
-                     holder_text(s), num(s.predicted_rate, 6)});
+                     s.eigenvalues.size() > 2 ? complex_text(s.eigenvalues[2]) : "", smoothness_text(s), holder_text(s),
+                     num(s.predicted_rate, 6)});
     }
     md << "\n";
   }
@@ -616,7 +641,8 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
     std::string regular_text = "-";
     for(const Surface_summary& s : t.interior)
       if(s.valence == regular)
-        regular_text = std::string(s.c1 ? "C1" : "not C1") + " (" + (t.facts->dual ? "4-gon" : "n = " + std::to_string(regular)) + ")";
+        regular_text = std::string(s.c1 ? "C1" : "not C1") + " (" +
+                       (t.facts->dual ? "4-gon" : "n = " + std::to_string(regular)) + ")";
     std::vector<int> exact;
     bool border_exact = true;
     for(std::size_t c = 0; c < t.interior_rules.size(); ++c)
@@ -628,10 +654,10 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
                                ? "yes (all weights rational)"
                                : "exact at " + std::string(t.facts->dual ? "n" : "valence") + " " + ranges(exact) +
                                    " only (elsewhere rounded weights)";
-    rows.push_back({{"[" + t.facts->keyword + "](surface-" + t.facts->keyword + ".md)", "surface",
-                     t.facts->dual ? "dual" : "primal", t.facts->interpolating ? "interpolating" : "approximating",
-                     t.facts->split, regular_text, c1_summary(t.interior, regular, t.facts->dual ? "n (face)" : "n"),
-                     c1_summary(t.border, -1, "k"), exact_text}});
+    rows.push_back(
+      {{"[" + t.facts->keyword + "](surface-" + t.facts->keyword + ".md)", "surface", t.facts->dual ? "dual" : "primal",
+        t.facts->interpolating ? "interpolating" : "approximating", t.facts->split, regular_text,
+        c1_summary(t.interior, regular, t.facts->dual ? "n (face)" : "n"), c1_summary(t.border, -1, "k"), exact_text}});
   }
   rows.push_back({{"linear", "surface", "primal", "interpolating", "1-to-4 triangle split or quad split",
                    "C0 (the limit is the control mesh; not analysed)", "C0", "C0", "yes (rational weights)"}});
@@ -648,9 +674,10 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "Every weight is read from the schemes' own masks, every verdict is computed by the eigen-analysis "
      << "(`analyse_surface_scheme()`, `analyse_curve_scheme()`) in exact rational arithmetic "
      << "(`Exact_rational`; eigenvalues by Eigen in double). Surface verdicts are the C1 test "
-     << "(eigenvalues, extended spectrum, characteristic map) at interior vertices of valence "
-     << first_valence << ".." << last_valence << " (Doo-Sabin: faces with that many corners) and at border "
-     << "vertices with 1.." << last_border << " faces (Doo-Sabin: the border faces made from them); the test decides C1, not higher smoothness (the "
+     << "(eigenvalues, extended spectrum, characteristic map) at interior vertices of valence " << first_valence << ".."
+     << last_valence << " (Doo-Sabin: faces with that many corners) and at border "
+     << "vertices with 1.." << last_border
+     << " faces (Doo-Sabin: the border faces made from them); the test decides C1, not higher smoothness (the "
      << "B-spline based schemes are C2 at regular points, which this analysis does not test). Curve "
      << "smoothness is proven by the difference-scheme method (a lower bound).\n\n"
      << "## Overview\n\n|";
@@ -681,8 +708,9 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`.\n";
 }
 
-const char* const usage = "usage: subdiv-doc-tables OUTPUT_DIR\n"
-                          "writes the scheme tables (Markdown and CSV) into OUTPUT_DIR (created if missing)\n";
+const char* const usage =
+  "usage: subdiv-doc-tables OUTPUT_DIR\n"
+  "writes the scheme tables (Markdown and CSV) into OUTPUT_DIR (created if missing)\n";
 
 } // namespace
 

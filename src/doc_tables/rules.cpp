@@ -27,8 +27,8 @@ using Warren_loop_mask = S::Loop_mask<Mesh_, FT, S::Warren_beta>;
 
 constexpr int patch_rings = 3;
 
-Rule make_rule(const std::string& name, const std::string& description, const S::Stencil<SI::Analysis_vertex, Exact>& stencil,
-               const SI::Labelling& labels)
+Rule make_rule(const std::string& name, const std::string& description,
+               const S::Stencil<SI::Analysis_vertex, Exact>& stencil, const SI::Labelling& labels)
 {
   Rule rule;
   rule.name = name;
@@ -39,8 +39,8 @@ Rule make_rule(const std::string& name, const std::string& description, const S:
     const int label = labels.label(term.first);
     if(label < 0)
       throw std::runtime_error("a " + name + " rule reads a vertex outside the patch");
-    rule.terms.push_back({label, labels.ring[static_cast<std::size_t>(label)], term.second,
-                          SI::has_small_denominator(term.second)});
+    rule.terms.push_back(
+      {label, labels.ring[static_cast<std::size_t>(label)], term.second, SI::has_small_denominator(term.second)});
   }
   std::sort(rule.terms.begin(), rule.terms.end(),
             [](const Rule_term& x, const Rule_term& y) { return x.label < y.label; });
@@ -85,13 +85,16 @@ std::vector<Rule> rules_of(int n, bool boundary)
     }
   } else if constexpr(Traits::steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
     if(boundary) {
-      record("border vertex (refining step)", "The new position of the centre (label 0) on a step that refines the border",
+      record("border vertex (refining step)",
+             "The new position of the centre (label 0) on a step that refines the border",
              [&](auto& acc) { mask.border_vertex_node(mesh, mesh.opposite(h), acc); });
       record("border vertex (resting step)", "The new position of the centre on a step that leaves the border alone",
              [&](auto& acc) { mask.resting_border_vertex_node(mesh, mesh.source(h), acc); });
-      record("border edge, first third", "The new vertex at 1/3 of the border edge from the centre to label 1 (refining step)",
+      record("border edge, first third",
+             "The new vertex at 1/3 of the border edge from the centre to label 1 (refining step)",
              [&](auto& acc) { mask.border_edge_node(mesh, h, 1, acc); });
-      record("border edge, second third", "The new vertex at 2/3 of the border edge from the centre to label 1 (refining step)",
+      record("border edge, second third",
+             "The new vertex at 2/3 of the border edge from the centre to label 1 (refining step)",
              [&](auto& acc) { mask.border_edge_node(mesh, h, 2, acc); });
     } else {
       record("vertex", "The new position of the centre (label 0)",

@@ -29,8 +29,8 @@ struct Rule_term
 /// one rule of a scheme at one configuration
 struct Rule
 {
-  std::string name;        ///< "vertex", "edge", "face", "corner", "border vertex", "border edge"
-  std::string description; ///< which new vertex it makes
+  std::string name;             ///< "vertex", "edge", "face", "corner", "border vertex", "border edge"
+  std::string description;      ///< which new vertex it makes
   std::vector<Rule_term> terms; ///< by label
   std::vector<int> ring_sizes;  ///< number of labels in every ring of the patch
 };

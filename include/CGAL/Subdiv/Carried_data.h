@@ -156,16 +156,15 @@ namespace internal {
 /// the tag of the named parameter `carried_data` (not in a namespace called
 /// internal_np, which would hide CGAL's own from code in CGAL::Subdiv)
 struct carried_data_t
-{
-};
+{};
 } // namespace internal
 
 /// named parameter of `subdivide()` and the scheme functions: data to carry;
 /// `np` lets it join other named parameters:
 /// `carried_data(data, CGAL::parameters::number_of_iterations(2))`
 template <class Mesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
-CGAL::Named_function_parameters<const Carried_data<Mesh, FT>*, internal::carried_data_t, NamedParameters>
-carried_data(const Carried_data<Mesh, FT>& data, const NamedParameters& np = CGAL::parameters::default_values())
+CGAL::Named_function_parameters<const Carried_data<Mesh, FT>*, internal::carried_data_t, NamedParameters> carried_data(
+  const Carried_data<Mesh, FT>& data, const NamedParameters& np = CGAL::parameters::default_values())
 {
   return {&data, np};
 }

@@ -41,9 +41,9 @@ inline void check_output_size(std::size_t n, int levels, std::size_t limit)
   double estimate = static_cast<double>(n);
   for(int l = 0; l < levels && estimate <= static_cast<double>(limit); ++l)
     estimate *= 2;
-  require(estimate <= static_cast<double>(limit),
-          std::to_string(levels) + " levels on " + std::to_string(n) + " points would make more than " +
-            std::to_string(limit) + " points (the max_output_points limit)");
+  require(estimate <= static_cast<double>(limit), std::to_string(levels) + " levels on " + std::to_string(n) +
+                                                    " points would make more than " + std::to_string(limit) +
+                                                    " points (the max_output_points limit)");
 }
 
 } // namespace internal

@@ -52,8 +52,7 @@ private:
 // same mesh afterwards).
 template <class Mesh>
 void make_indices_dense(Mesh&)
-{
-}
+{}
 
 template <class Point>
 void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
@@ -68,8 +67,7 @@ void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
 // are never mapped)
 template <class Host, class Mesh>
 void reserve_levels(Mesh&, int)
-{
-}
+{}
 
 template <class Host, class Point>
 void reserve_levels(CGAL::Surface_mesh<Point>& mesh, int levels)
@@ -162,12 +160,10 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const 
 // Surface_mesh, with no soup
 template <class Host, class = void>
 struct Wires_from_snapshot : std::false_type
-{
-};
+{};
 template <class Host>
 struct Wires_from_snapshot<Host, std::void_t<decltype(Host::new_face_size)>> : std::true_type
-{
-};
+{};
 
 // The resize of a Surface_mesh may run beside the loops that read the old
 // mesh only when its accessors do not read the arrays' sizes (which the
@@ -199,11 +195,14 @@ void compute_points(CGAL::Surface_mesh<P>& mesh, const Host& host, const Mask& m
     std::vector<Point> kept(old_vertices);
     const auto store = [&](std::size_t j, const Point& p) { (j < old_vertices ? kept[j] : out[j]) = p; };
     if constexpr(is_double_point_3<Point>()) {
-      host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-        Flat_point_sum<Point> sum(out);
-        report(sum);
-        store(j, sum.point());
-      }, loop);
+      host.for_each_new_vertex(
+        mask,
+        [&](std::size_t j, const auto& report) {
+          Flat_point_sum<Point> sum(out);
+          report(sum);
+          store(j, sum.point());
+        },
+        loop);
       loop.for_range(old_vertices, 16384, [&](std::size_t begin, std::size_t end) {
         std::copy(kept.begin() + static_cast<std::ptrdiff_t>(begin), kept.begin() + static_cast<std::ptrdiff_t>(end),
                   out + begin);
@@ -255,7 +254,7 @@ bool refine_beside_resize(CGAL::Surface_mesh<P>& mesh, const Host& host, const M
     const auto ne = static_cast<size_type>(host.number_of_new_edges());
     const auto nf = static_cast<size_type>(host.number_of_new_faces());
     Face_soup::check_counts(nv, ne);
-    mesh.reserve(nv, ne, nf); // no-op when the room is there (`reserve_levels`)
+    mesh.reserve(nv, ne, nf);             // no-op when the room is there (`reserve_levels`)
     const Point* old_points = &vpm[V(0)]; // stays valid: the resize below is within capacity
     std::vector<Point> points(nv);
     Split_snapshot snapshot;
@@ -263,11 +262,14 @@ bool refine_beside_resize(CGAL::Surface_mesh<P>& mesh, const Host& host, const M
     loop.invoke(
       [&] {
         snapshot = host.snapshot(inner, true);
-        host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-          Flat_point_sum<Point> sum(old_points);
-          report(sum);
-          points[j] = sum.point();
-        }, inner);
+        host.for_each_new_vertex(
+          mask,
+          [&](std::size_t j, const auto& report) {
+            Flat_point_sum<Point> sum(old_points);
+            report(sum);
+            points[j] = sum.point();
+          },
+          inner);
       },
       [&] { mesh.resize(nv, ne, nf); });
     CGAL_assertion(&vpm[V(0)] == old_points);
@@ -297,7 +299,8 @@ bool refine_beside_resize(CGAL::Surface_mesh<P>& mesh, const Host& host, const M
  * the resize beside the snapshot and the points; the result is the same.
  */
 template <class Mask, class P, class VertexPointMap>
-void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& loop = Parallel_loop())
+void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPointMap& vpm,
+                 const Parallel_loop& loop = Parallel_loop())
 {
   using SM = CGAL::Surface_mesh<P>;
   using size_type = typename SM::size_type;
@@ -309,8 +312,7 @@ void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPoin
       return;
     const Split_snapshot snapshot = host.snapshot(loop, true);
     mesh.resize(static_cast<size_type>(host.number_of_new_vertices()),
-                static_cast<size_type>(host.number_of_new_edges()),
-                static_cast<size_type>(host.number_of_new_faces()));
+                static_cast<size_type>(host.number_of_new_edges()), static_cast<size_type>(host.number_of_new_faces()));
     compute_points(mesh, host, mask, vpm, old_vertices, loop);
     wire_split(mesh, host, snapshot, old_vertices, loop);
   } else {
@@ -386,8 +388,8 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   using parameters::get_parameter;
   using Host = typename Mask::Host;
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_property_map(CGAL::vertex_point, mesh));
+  const auto vpm =
+    choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh));
   const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1);
 
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);

@@ -178,8 +178,8 @@ void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
       others_inside = false;
   }
   result.one_is_simple_and_dominant = (ones == 1 && others_inside && std::abs(ev[0] - 1.0) < tol);
-  result.c1_necessary = result.one_is_simple_and_dominant && ev.size() >= 2 &&
-                        std::abs(ev[1] - 0.5) < tol && (ev.size() < 3 || std::abs(ev[2]) < 0.5 - tol);
+  result.c1_necessary = result.one_is_simple_and_dominant && ev.size() >= 2 && std::abs(ev[1] - 0.5) < tol &&
+                        (ev.size() < 3 || std::abs(ev[2]) < 0.5 - tol);
 
   // predicted rate: drop one eigenvalue 1 and, for linear reproduction, one 1/2
   std::vector<std::complex<double>> rest = ev;
@@ -257,8 +257,8 @@ Curve_analysis<typename Scheme::Number_type> analyse_curve_scheme(const Scheme& 
   // smoothness: necessary conditions, then the difference schemes
   const Laurent_polynomial<FT> a = subdivision_symbol(scheme);
   const FT one(1);
-  const bool necessary = internal::is_negligible(FT(a.evaluate(one) - FT(2)), one) &&
-                         internal::is_negligible(a.evaluate(FT(-1)), one);
+  const bool necessary =
+    internal::is_negligible(FT(a.evaluate(one) - FT(2)), one) && internal::is_negligible(a.evaluate(FT(-1)), one);
   if(!necessary)
     return result;
   for(const auto& bound : difference_scheme_bounds(a, max_steps))
@@ -292,7 +292,8 @@ Curve_analysis<FT> analyse_bezier(const Bezier_scheme<FT>& scheme)
   for(int r = 0; r <= d; ++r)
     for(int c = 0; c <= d; ++c)
       result.matrix(r, c) = FT(0);
-  struct Row_acc {
+  struct Row_acc
+  {
     Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S;
     int row;
     void add(int source, const FT& w) { S(row, source) += w; }
@@ -417,8 +418,8 @@ inline double level_distance(const std::vector<Double_point>& old_points, const 
 template <class Point>
 std::vector<double> discrete_curvature(const std::vector<Point>& points, bool closed)
 {
-  internal::require(!closed || points.size() >= 3, "a closed polyline needs at least 3 points, got " +
-                                                     std::to_string(points.size()));
+  internal::require(!closed || points.size() >= 3,
+                    "a closed polyline needs at least 3 points, got " + std::to_string(points.size()));
   const std::vector<internal::Double_point> p = internal::to_double_points(points);
   const std::size_t n = p.size();
   std::vector<double> curvature(n, 0.0);
@@ -471,8 +472,7 @@ std::vector<Level_measurement> measure_levels(const std::vector<Point>& points, 
   internal::check_polyline(points, options.closed());
   internal::check_output_size(points.size(), options.number_of_iterations(), options.max_output_points());
   const double sigma = CGAL::to_double(parametric_shift(scheme));
-  const bool copies_ends =
-    !options.closed() && options.end_rule() == End_rule::keep_ends && !is_vertex_centred(scheme);
+  const bool copies_ends = !options.closed() && options.end_rule() == End_rule::keep_ends && !is_vertex_centred(scheme);
   Polyline_options one_level = options;
   one_level.number_of_iterations(1);
 
@@ -486,8 +486,8 @@ std::vector<Level_measurement> measure_levels(const std::vector<Point>& points, 
     Level_measurement m;
     m.level = level;
     m.points = next.size();
-    m.distance = internal::level_distance(current_d, next_d, options.closed(), plan.first_position(),
-                                          copies_ends ? 1 : 0, sigma);
+    m.distance =
+      internal::level_distance(current_d, next_d, options.closed(), plan.first_position(), copies_ends ? 1 : 0, sigma);
     m.ratio = result.empty() ? std::numeric_limits<double>::quiet_NaN() : m.distance / result.back().distance;
     const std::vector<double> curvature = discrete_curvature(next, options.closed());
     m.max_curvature = curvature.empty() ? 0.0 : *std::max_element(curvature.begin(), curvature.end());

@@ -65,8 +65,8 @@ std::pair<int, int> invariant_window(const Scheme& scheme)
  * \f$ S = \frac18 \begin{pmatrix} 4 & 4 & 0 \\ 1 & 6 & 1 \\ 0 & 4 & 4 \end{pmatrix} \f$.
  */
 template <class Scheme>
-Eigen::Matrix<typename Scheme::Number_type, Eigen::Dynamic, Eigen::Dynamic>
-local_subdivision_matrix(const Scheme& scheme)
+Eigen::Matrix<typename Scheme::Number_type, Eigen::Dynamic, Eigen::Dynamic> local_subdivision_matrix(
+  const Scheme& scheme)
 {
   using FT = typename Scheme::Number_type;
   using Matrix = Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>;
@@ -77,7 +77,8 @@ local_subdivision_matrix(const Scheme& scheme)
     for(int c = 0; c < n; ++c)
       S(r, c) = FT(0);
   // the matrix recorder: offset i + k of the old point -> column i + k - L
-  struct Row_acc {
+  struct Row_acc
+  {
     Matrix& S;
     int row, i, L;
     void add(int k, const FT& w) { S(row, i + k - L) += w; }
@@ -150,7 +151,8 @@ template <class FT>
 std::vector<FT> normalised_left_fixed_vector(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S)
 {
   const int n = static_cast<int>(S.rows());
-  std::vector<std::vector<FT>> A(static_cast<std::size_t>(n + 1), std::vector<FT>(static_cast<std::size_t>(n + 1), FT(0)));
+  std::vector<std::vector<FT>> A(static_cast<std::size_t>(n + 1),
+                                 std::vector<FT>(static_cast<std::size_t>(n + 1), FT(0)));
   FT scale(1);
   for(int r = 0; r < n; ++r)
     for(int c = 0; c < n; ++c) {

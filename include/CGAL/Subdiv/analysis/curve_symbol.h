@@ -72,8 +72,8 @@ struct Laurent_polynomial
     std::size_t end = coefficients.size();
     while(end > first && coefficients[end - 1] == FT(0))
       --end;
-    coefficients = std::vector<FT>(coefficients.begin() + static_cast<long>(first),
-                                   coefficients.begin() + static_cast<long>(end));
+    coefficients =
+      std::vector<FT>(coefficients.begin() + static_cast<long>(first), coefficients.begin() + static_cast<long>(end));
     lowest = coefficients.empty() ? 0 : lowest + static_cast<int>(first);
   }
 
@@ -112,7 +112,8 @@ template <class Scheme>
 Laurent_polynomial<typename Scheme::Number_type> subdivision_symbol(const Scheme& scheme)
 {
   using FT = typename Scheme::Number_type;
-  struct Symbol_acc {
+  struct Symbol_acc
+  {
     Laurent_polynomial<FT>& symbol;
     int parity;
     void add(int k, const FT& w) { symbol.add(parity - 2 * k, w); }
@@ -226,12 +227,12 @@ double iterated_scheme_norm(const Laurent_polynomial<FT>& c, int L)
 template <class FT>
 struct Difference_scheme_bound
 {
-  int order = 0;                  ///< m
-  Laurent_polynomial<FT> symbol;  ///< c_m, exact in FT
-  int steps = 0;                  ///< the L giving the best Holder bound (0 if none contracts)
-  double norm = 0;                ///< eta at that L (or the smallest eta found, if none is < 1)
-  bool contractive = false;       ///< eta < 1 for some L <= Lmax: C^m is proven
-  double holder = 0;              ///< m + min(1, -log2(eta) / L) if contractive
+  int order = 0;                 ///< m
+  Laurent_polynomial<FT> symbol; ///< c_m, exact in FT
+  int steps = 0;                 ///< the L giving the best Holder bound (0 if none contracts)
+  double norm = 0;               ///< eta at that L (or the smallest eta found, if none is < 1)
+  bool contractive = false;      ///< eta < 1 for some L <= Lmax: C^m is proven
+  double holder = 0;             ///< m + min(1, -log2(eta) / L) if contractive
 };
 
 /*!
@@ -251,8 +252,8 @@ struct Difference_scheme_bound
  * \throws Bad_input unless 1 <= max_steps <= 24 and max_order >= 0
  */
 template <class FT>
-std::vector<Difference_scheme_bound<FT>>
-difference_scheme_bounds(const Laurent_polynomial<FT>& symbol, int max_steps = 16, int max_order = 64)
+std::vector<Difference_scheme_bound<FT>> difference_scheme_bounds(const Laurent_polynomial<FT>& symbol,
+                                                                  int max_steps = 16, int max_order = 64)
 {
   internal::require(max_steps >= 1 && max_steps <= 24,
                     "max_steps must be between 1 and 24, got " + std::to_string(max_steps));
@@ -268,8 +269,7 @@ difference_scheme_bounds(const Laurent_polynomial<FT>& symbol, int max_steps = 1
     double best_exponent = -1;
     for(int L = 1; L <= max_steps; ++L) {
       // the L-step symbol has (length - 1)(2^L - 1) + 1 coefficients: at most 2^23
-      if(static_cast<double>(bound.symbol.coefficients.size() - 1) * (std::ldexp(1.0, L) - 1) + 1 >
-         std::ldexp(1.0, 23))
+      if(static_cast<double>(bound.symbol.coefficients.size() - 1) * (std::ldexp(1.0, L) - 1) + 1 > std::ldexp(1.0, 23))
         break;
       const double eta = iterated_scheme_norm(bound.symbol, L);
       if(eta < 1) {

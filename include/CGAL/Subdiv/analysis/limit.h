@@ -254,13 +254,16 @@ Limit_masks compute_limit_masks(int valence, bool border, const Args&... args)
   masks.c1_necessary = analysis.c1_necessary;
   masks.c1 = analysis.c1;
   const std::string where =
-    analysis.scheme + (border ? " at a border vertex with " + std::to_string(valence) + " faces"
-                              : (Traits::face_centred ? " at a face with " + std::to_string(valence) + " corners"
-                                                      : " at an interior vertex of valence " + std::to_string(valence)));
-  require(analysis.one_is_simple_and_dominant, where + ": 1 is not a simple dominant eigenvalue, there is no limit mask");
+    analysis.scheme + (border
+                         ? " at a border vertex with " + std::to_string(valence) + " faces"
+                         : (Traits::face_centred ? " at a face with " + std::to_string(valence) + " corners"
+                                                 : " at an interior vertex of valence " + std::to_string(valence)));
+  require(analysis.one_is_simple_and_dominant,
+          where + ": 1 is not a simple dominant eigenvalue, there is no limit mask");
   const Local_subdivision_matrix<CGAL::Exact_rational> exact =
     local_subdivision_matrix<MaskTemplate, CGAL::Exact_rational>(valence, border, analysis.rings, args...);
-  require(exact.invariant && exact.S.rows() == analysis.matrix.rows(), where + ": the exact local matrix does not match");
+  require(exact.invariant && exact.S.rows() == analysis.matrix.rows(),
+          where + ": the exact local matrix does not match");
   masks.limit = normalised_left_fixed_vector(exact.S);
   require(!masks.limit.empty(), where + ": the limit mask is not unique");
   if constexpr(Traits::face_centred) {
@@ -341,8 +344,7 @@ FT exact_weight_as(const CGAL::Exact_rational& w)
 
 /// no height channel
 struct No_heights
-{
-};
+{};
 
 // what the evaluation finds at one vertex
 template <class Point>
@@ -438,8 +440,8 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     using parameters::is_default_parameter;
-    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                      get_property_map(CGAL::vertex_point, mesh));
+    const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh));
     const auto results = evaluate(mesh, vpm, static_cast<const internal::No_heights*>(nullptr), "project_to_limit");
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
       write_normals(mesh, vpm, results, get_parameter(np, internal_np::vertex_normal_map));
@@ -468,8 +470,8 @@ public:
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, mesh));
+    const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, mesh));
     const auto results = evaluate(mesh, vpm, static_cast<const internal::No_heights*>(nullptr), "limit_normals");
     write_normals(mesh, vpm, results, normals);
   }
@@ -499,8 +501,8 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     using parameters::is_default_parameter;
-    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                      get_property_map(CGAL::vertex_point, mesh));
+    const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh));
     using Point = typename boost::property_traits<std::remove_const_t<decltype(vpm)>>::value_type;
     using FT = internal::Point_FT<Point>;
     using Vector = internal::Point_vector<Point>;
@@ -546,8 +548,8 @@ public:
    * as `subdivide()` does. \throws Bad_input
    */
   template <class PolygonMesh, class VPM, class HeightMap>
-  std::vector<internal::Vertex_limit<typename boost::property_traits<VPM>::value_type>>
-  evaluate(const PolygonMesh& mesh, const VPM& vpm, const HeightMap* heights, const std::string& caller) const
+  std::vector<internal::Vertex_limit<typename boost::property_traits<VPM>::value_type>> evaluate(
+    const PolygonMesh& mesh, const VPM& vpm, const HeightMap* heights, const std::string& caller) const
   {
     using Point = typename boost::property_traits<VPM>::value_type;
     using FT = internal::Point_FT<Point>;
@@ -757,8 +759,9 @@ private:
       }
     }
     std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, typename Copy::Vertex_index> copy_of(v2v.begin(),
-                                                                                                       v2v.end());
-    auto copy_heights = copy.template add_property_map<typename Copy::Vertex_index, FT>("v:subdiv_limit_height", FT(0)).first;
+                                                                                                         v2v.end());
+    auto copy_heights =
+      copy.template add_property_map<typename Copy::Vertex_index, FT>("v:subdiv_limit_height", FT(0)).first;
     if constexpr(!std::is_same<HeightMap, internal::No_heights>::value)
       for(const auto& pair : v2v)
         put(copy_heights, pair.second, FT(get(*heights, pair.first)));

@@ -50,10 +50,14 @@ enum class Characteristic_map_verdict {
 inline std::string to_string(Characteristic_map_verdict verdict)
 {
   switch(verdict) {
-    case Characteristic_map_verdict::regular_injective: return "regular_injective";
-    case Characteristic_map_verdict::not_regular: return "not_regular";
-    case Characteristic_map_verdict::not_injective: return "not_injective";
-    default: return "not_applicable";
+    case Characteristic_map_verdict::regular_injective:
+      return "regular_injective";
+    case Characteristic_map_verdict::not_regular:
+      return "not_regular";
+    case Characteristic_map_verdict::not_injective:
+      return "not_injective";
+    default:
+      return "not_applicable";
   }
 }
 
@@ -84,9 +88,9 @@ struct Surface_analysis_options
 template <class FT>
 struct Surface_analysis
 {
-  std::string scheme;   ///< `mask.name()`
-  int valence = 0;      ///< valence n (border: number of faces k; dual: corners of the central face; dual at
-                        ///< the border: faces k of the border vertex the central face was made from)
+  std::string scheme; ///< `mask.name()`
+  int valence = 0;    ///< valence n (border: number of faces k; dual: corners of the central face; dual at
+                      ///< the border: faces k of the border vertex the central face was made from)
   bool boundary = false;
   bool face_centred = false; ///< dual scheme: the neighbourhood is centred at an n-gon
   int rings = 0;             ///< rings of the (smallest invariant) neighbourhood
@@ -411,9 +415,10 @@ inline Annulus_test test_annulus(const Analysis_mesh& mesh, const std::vector<in
   if(border) // one simple loop around the sector annulus, oriented as the faces
     injective = windings.size() == 1 && areas[0] * sign > 0;
   else // an outer loop around the origin as the faces turn, an inner one against
-    injective = windings.size() == 2 && ((windings[0] == sign && windings[1] == -sign) ||
-                                         (windings[0] == -sign && windings[1] == sign));
-  result.verdict = injective ? Characteristic_map_verdict::regular_injective : Characteristic_map_verdict::not_injective;
+    injective = windings.size() == 2 &&
+                ((windings[0] == sign && windings[1] == -sign) || (windings[0] == -sign && windings[1] == sign));
+  result.verdict =
+    injective ? Characteristic_map_verdict::regular_injective : Characteristic_map_verdict::not_injective;
   return result;
 }
 
@@ -511,8 +516,8 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
           "the characteristic-map patch does not match its matrix");
   std::vector<char> trusted(patch.mesh.number_of_vertices(), 0);
   for(std::size_t i = 0; i < labels.size(); ++i) {
-    patch.mesh.point(labels.vertex_of[i]) = Analysis_mesh::Point(x[static_cast<Eigen::Index>(i)],
-                                                                 y[static_cast<Eigen::Index>(i)], 0);
+    patch.mesh.point(labels.vertex_of[i]) =
+      Analysis_mesh::Point(x[static_cast<Eigen::Index>(i)], y[static_cast<Eigen::Index>(i)], 0);
     trusted[labels.vertex_of[i].idx()] = labels.ring[i] < big; // the outer ring is the patch border
   }
   Analysis_mesh mesh = patch.mesh;
@@ -520,8 +525,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
   std::vector<int> rings;
   int outer = 0;
   for(int level = 1; level <= 8; ++level) {
-    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::steps == 2 ? 9 : 4) > options.max_faces &&
-       level > 2)
+    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::steps == 2 ? 9 : 4) > options.max_faces && level > 2)
       break;
     auto step = analysed_step(mesh, start, mask);
     std::vector<char> next_trusted(step.mesh.number_of_vertices(), 0);
@@ -783,8 +787,8 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
   for(const auto& value : ev)
     if(std::abs(value - ev[1]) < tol)
       ++result.subdominant_multiplicity;
-  const bool real_pair = ev.size() >= 3 && std::abs(ev[1].imag()) < tol && std::abs(ev[2].imag()) < tol &&
-                         ev[2].real() > tol;
+  const bool real_pair =
+    ev.size() >= 3 && std::abs(ev[1].imag()) < tol && std::abs(ev[2].imag()) < tol && ev[2].real() > tol;
   const bool gap = ev.size() < 4 || std::abs(ev[3]) < ev[2].real() - tol;
   if(boundary)
     result.c1_necessary = result.one_is_simple_and_dominant && real_pair && gap;
@@ -799,8 +803,7 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
       std::vector<Eigen::Index> near; // eigenvalues of the pair: lambda_1 first
       for(const std::complex<double>& target : {ev[1], ev.size() > 2 ? ev[2] : ev[1]})
         for(Eigen::Index i = 0; i < m; ++i)
-          if(std::abs(left.eigenvalues()[i] - target) < 1e-7 &&
-             std::find(near.begin(), near.end(), i) == near.end()) {
+          if(std::abs(left.eigenvalues()[i] - target) < 1e-7 && std::find(near.begin(), near.end(), i) == near.end()) {
             near.push_back(i);
             break;
           }

@@ -139,15 +139,14 @@ struct Patch
 inline Patch build_patch(int face_size, bool face_centred, int n, bool border, int rings)
 {
   require(n >= 1, "the valence must be positive, got " + std::to_string(n));
-  require(!(face_centred && border),
-          "build_patch: the border neighbourhoods of face-centred (dual) schemes are made by refinement (analysis_patch)");
+  require(
+    !(face_centred && border),
+    "build_patch: the border neighbourhoods of face-centred (dual) schemes are made by refinement (analysis_patch)");
   require(face_centred || border || n >= 3, "an interior vertex needs valence 3 or more, got " + std::to_string(n));
   require(!face_centred || n >= 3, "a face needs 3 or more corners, got " + std::to_string(n));
   const int sectors = n;
   const double angle = (border ? 3.14159265358979323846 : 2 * 3.14159265358979323846) / n;
-  const auto direction = [&](int i) -> std::pair<double, double> {
-    return {std::cos(angle * i), std::sin(angle * i)};
-  };
+  const auto direction = [&](int i) -> std::pair<double, double> { return {std::cos(angle * i), std::sin(angle * i)}; };
   Patch patch;
   Analysis_mesh& mesh = patch.mesh;
   std::map<std::tuple<int, int, int>, Analysis_vertex> ids;
@@ -539,10 +538,10 @@ inline Patch crop_patch(const Analysis_mesh& mesh, Analysis_halfedge start, bool
   const auto smallest = [](const std::vector<Analysis_vertex>& f) {
     return std::make_pair(*std::min_element(f.begin(), f.end()), *std::max_element(f.begin(), f.end()));
   };
-  std::stable_sort(faces.begin(), faces.end(), [&](const std::vector<Analysis_vertex>& a,
-                                                   const std::vector<Analysis_vertex>& b) {
-    return smallest(a) < smallest(b);
-  });
+  std::stable_sort(faces.begin(), faces.end(),
+                   [&](const std::vector<Analysis_vertex>& a, const std::vector<Analysis_vertex>& b) {
+                     return smallest(a) < smallest(b);
+                   });
   for(const auto& f : faces)
     require(CGAL::Euler::add_face(f, result.mesh) != Analysis_mesh::null_face(),
             "the cropped neighbourhood is not a manifold patch");
@@ -554,8 +553,8 @@ inline Patch crop_patch(const Analysis_mesh& mesh, Analysis_halfedge start, bool
 
 // labels and faces of the `rings` rings: the connectivity two levels are compared by
 inline std::pair<std::vector<int>, std::set<std::vector<int>>> connectivity(const Analysis_mesh& mesh,
-                                                                             Analysis_halfedge start,
-                                                                             bool face_centred, int rings)
+                                                                            Analysis_halfedge start, bool face_centred,
+                                                                            int rings)
 {
   const Labelling labels = label_neighbourhood(mesh, start, face_centred, rings);
   return {labels.ring, labelled_faces(mesh, labels)};
@@ -674,7 +673,7 @@ namespace internal {
 // the matrix of the `rings`-ring neighbourhood; `mask` gives the weights
 template <class Mask>
 Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const Mask& mask, int valence, bool border,
-                                                                          int rings)
+                                                                           int rings)
 {
   using FT = typename Mask::Number_type;
   using Traits = Analysis_host_traits<typename Mask::Host>;

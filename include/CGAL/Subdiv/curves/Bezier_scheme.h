@@ -61,9 +61,9 @@ public:
   /// \throws Bad_input unless 1 <= degree <= max_degree
   explicit Bezier_scheme(int degree = 3) : m_degree(degree)
   {
-    internal::require(degree >= 1 && degree <= max_degree,
-                      "Bezier degree must be between 1 and " + std::to_string(max_degree) + ", got " +
-                        std::to_string(degree));
+    internal::require(
+      degree >= 1 && degree <= max_degree,
+      "Bezier degree must be between 1 and " + std::to_string(max_degree) + ", got " + std::to_string(degree));
     derive_masks();
   }
 
@@ -105,8 +105,8 @@ private:
  * returns the control points of the pieces over [0, t] and [t, 1].
  */
 template <class Point>
-std::pair<std::vector<Point>, std::vector<Point>>
-de_casteljau_split(const std::vector<Point>& control, const internal::Point_FT<Point>& t)
+std::pair<std::vector<Point>, std::vector<Point>> de_casteljau_split(const std::vector<Point>& control,
+                                                                     const internal::Point_FT<Point>& t)
 {
   internal::require(!control.empty(), "a Bezier curve needs at least one control point");
   const auto lerp = [&t](const Point& p, const Point& q) { return p + (q - p) * t; };
@@ -127,9 +127,21 @@ Point bezier_point(const std::vector<Point>& control, const internal::Point_FT<P
 class Bezier_options
 {
 public:
-  Bezier_options& number_of_iterations(int levels) { m_levels = levels; return *this; }
-  Bezier_options& closed(bool closed) { m_closed = closed; return *this; }
-  Bezier_options& max_output_points(std::size_t n) { m_max_output_points = n; return *this; }
+  Bezier_options& number_of_iterations(int levels)
+  {
+    m_levels = levels;
+    return *this;
+  }
+  Bezier_options& closed(bool closed)
+  {
+    m_closed = closed;
+    return *this;
+  }
+  Bezier_options& max_output_points(std::size_t n)
+  {
+    m_max_output_points = n;
+    return *this;
+  }
   int number_of_iterations() const { return m_levels; }
   bool closed() const { return m_closed; }
   std::size_t max_output_points() const { return m_max_output_points; }
@@ -149,8 +161,7 @@ std::size_t bezier_segment_count(const std::vector<Point>& points, int degree, b
 {
   const std::size_t d = static_cast<std::size_t>(degree);
   const std::size_t n = points.size();
-  const bool fits = closed ? (n >= d && n % d == 0 && n / d >= 1 && n >= 2)
-                           : (n >= d + 1 && (n - 1) % d == 0);
+  const bool fits = closed ? (n >= d && n % d == 0 && n / d >= 1 && n >= 2) : (n >= d + 1 && (n - 1) % d == 0);
   require(fits, std::string("a ") + (closed ? "closed" : "open") + " chain of Bezier segments of degree " +
                   std::to_string(degree) + " needs " + (closed ? "a multiple of d" : "m d + 1") +
                   " control points, got " + std::to_string(n));
@@ -177,7 +188,8 @@ std::vector<Point> split_segment(const std::vector<Point>& segment, const Bezier
   halves.reserve(2 * segment.size() - 1);
   for(int j = 0; j <= 2 * scheme.degree(); ++j) {
     Point_sum<Point> sum(segment);
-    struct Index_acc {
+    struct Index_acc
+    {
       Point_sum<Point>& sum;
       void add(int i, const FT& w) { sum.add(static_cast<std::size_t>(i), w); }
     } acc{sum};
@@ -274,9 +286,9 @@ std::vector<Point> bezier_subdivision_to_tolerance(const std::vector<Point>& poi
       stack.pop_back();
       if(internal::is_flat(segment, squared_tolerance)) {
         result.insert(result.end(), segment.begin(), segment.end() - 1);
-        internal::require(result.size() <= max_output_points,
-                          "the flatness tolerance needs more than " + std::to_string(max_output_points) +
-                            " points (the max_output_points limit)");
+        internal::require(result.size() <= max_output_points, "the flatness tolerance needs more than " +
+                                                                std::to_string(max_output_points) +
+                                                                " points (the max_output_points limit)");
         continue;
       }
       const auto halves = internal::split_segment(segment, scheme);

@@ -30,8 +30,7 @@ public:
   /// \throws Bad_input unless 0 < a < b < 1
   Corner_cutting_scheme(const FT& a, const FT& b) : m_a(a), m_b(b)
   {
-    internal::require(FT(0) < a && a < b && b < FT(1),
-                      "corner cutting needs 0 < a < b < 1");
+    internal::require(FT(0) < a && a < b && b < FT(1), "corner cutting needs 0 < a < b < 1");
   }
 
   std::string name() const { return "corner cutting"; }

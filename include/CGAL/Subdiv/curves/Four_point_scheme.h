@@ -29,8 +29,7 @@ public:
   /// \throws Bad_input unless 0 <= w < 1/4 (the range of the convergence theorem)
   explicit Four_point_scheme(const FT& w = FT(1) / FT(16)) : m_w(w)
   {
-    internal::require(FT(0) <= w && w < FT(1) / FT(4),
-                      "four-point tension w must satisfy 0 <= w < 1/4");
+    internal::require(FT(0) <= w && w < FT(1) / FT(4), "four-point tension w must satisfy 0 <= w < 1/4");
   }
 
   std::string name() const { return "four-point"; }

@@ -40,9 +40,9 @@ public:
   /// \throws Bad_input unless 1 <= degree <= max_degree
   explicit Uniform_bspline_scheme(int degree = 3) : m_degree(degree)
   {
-    internal::require(degree >= 1 && degree <= max_degree,
-                      "B-spline degree must be between 1 and " + std::to_string(max_degree) +
-                        ", got " + std::to_string(degree));
+    internal::require(
+      degree >= 1 && degree <= max_degree,
+      "B-spline degree must be between 1 and " + std::to_string(max_degree) + ", got " + std::to_string(degree));
     derive_masks();
   }
 

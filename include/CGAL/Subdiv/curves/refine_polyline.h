@@ -43,11 +43,27 @@ enum class End_rule {
 class Polyline_options
 {
 public:
-  Polyline_options& number_of_iterations(int levels) { m_levels = levels; return *this; }
-  Polyline_options& closed(bool closed) { m_closed = closed; return *this; }
-  Polyline_options& end_rule(End_rule rule) { m_end_rule = rule; return *this; }
+  Polyline_options& number_of_iterations(int levels)
+  {
+    m_levels = levels;
+    return *this;
+  }
+  Polyline_options& closed(bool closed)
+  {
+    m_closed = closed;
+    return *this;
+  }
+  Polyline_options& end_rule(End_rule rule)
+  {
+    m_end_rule = rule;
+    return *this;
+  }
   /// refuse, before allocating, any call whose output would have more points
-  Polyline_options& max_output_points(std::size_t n) { m_max_output_points = n; return *this; }
+  Polyline_options& max_output_points(std::size_t n)
+  {
+    m_max_output_points = n;
+    return *this;
+  }
 
   int number_of_iterations() const { return m_levels; }
   bool closed() const { return m_closed; }
@@ -77,8 +93,8 @@ public:
   using FT = typename Scheme::Number_type;
 
   Polyline_level(const Scheme& scheme, std::size_t n, bool closed, End_rule end_rule)
-    : m_even(rule(scheme, 0)), m_odd(rule(scheme, 1)), m_n(static_cast<long>(n)),
-      m_closed(closed), m_reflect(false), m_add_ends(false), m_first(0), m_count(0)
+    : m_even(rule(scheme, 0)), m_odd(rule(scheme, 1)), m_n(static_cast<long>(n)), m_closed(closed), m_reflect(false),
+      m_add_ends(false), m_first(0), m_count(0)
   {
     if(closed) {
       m_count = 2 * m_n;
@@ -88,8 +104,8 @@ public:
       m_reflect = true;
       m_count = 2 * m_n - 1;
       for(long q = 0; q < m_count; ++q)
-        require(reflection_fits(q), "a polyline of " + std::to_string(n) + " points is too short for " +
-                                      scheme.name() + " with kept ends");
+        require(reflection_fits(q),
+                "a polyline of " + std::to_string(n) + " points is too short for " + scheme.name() + " with kept ends");
       return;
     }
     // the longest run of positions whose whole stencil lies on the polyline
@@ -108,8 +124,8 @@ public:
     m_count = count;
     m_add_ends = (end_rule == End_rule::keep_ends);
     const long needed = m_add_ends ? 1 : 2;
-    require(m_count >= needed, "a polyline of " + std::to_string(n) + " points is too short for " +
-                                 scheme.name() + ": no new point has its whole stencil on it");
+    require(m_count >= needed, "a polyline of " + std::to_string(n) + " points is too short for " + scheme.name() +
+                                 ": no new point has its whole stencil on it");
   }
 
   /// number of points of the new level
@@ -196,8 +212,9 @@ void check_polyline(const Points& points, bool closed)
 {
   require(!points.empty(), "the polyline is empty");
   require(points.size() >= (closed ? 3u : 2u),
-          std::string("a ") + (closed ? "closed polyline needs at least 3 points" : "polyline needs at least 2 points") +
-            ", got " + std::to_string(points.size()));
+          std::string("a ") +
+            (closed ? "closed polyline needs at least 3 points" : "polyline needs at least 2 points") + ", got " +
+            std::to_string(points.size()));
   for(std::size_t i = 0; i < points.size(); ++i)
     require(is_finite_point(points[i]), "point " + std::to_string(i) + " has a non-finite coordinate");
 }

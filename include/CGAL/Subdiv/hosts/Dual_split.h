@@ -69,15 +69,8 @@ public:
   static bool next_counts(internal::Mesh_counts&) { return false; }
 
   explicit Dual_split(const Mesh& mesh)
-    : m_mesh(mesh),
-      m_number(mesh),
-      m_corner(2 * num_edges(mesh), none),
-      m_vertex_edge(2 * num_edges(mesh), none),
-      m_corner_count(0),
-      m_interior_count(0),
-      m_edge_count(0),
-      m_vertex_face_count(0),
-      m_closing_count(0)
+    : m_mesh(mesh), m_number(mesh), m_corner(2 * num_edges(mesh), none), m_vertex_edge(2 * num_edges(mesh), none),
+      m_corner_count(0), m_interior_count(0), m_edge_count(0), m_vertex_face_count(0), m_closing_count(0)
   {
     for(face_descriptor f : CGAL::faces(mesh))
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
@@ -108,10 +101,7 @@ public:
   }
 
   std::size_t number_of_new_vertices() const { return m_corner_count; }
-  std::size_t number_of_new_faces() const
-  {
-    return num_faces(m_mesh) + m_interior_count + m_vertex_face_count;
-  }
+  std::size_t number_of_new_faces() const { return num_faces(m_mesh) + m_interior_count + m_vertex_face_count; }
 
   Vertex_origin origin(std::size_t j) const { return {Origin_kind::corner, j}; }
 

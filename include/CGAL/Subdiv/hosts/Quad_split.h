@@ -55,12 +55,8 @@ public:
   }
 
   explicit Quad_split(const Mesh& mesh)
-    : m_mesh(mesh),
-      m_number(mesh),
-      m_vertex_count(num_vertices(mesh)),
-      m_edge_count(num_edges(mesh)),
-      m_face_count(num_faces(mesh)),
-      m_corner_count(0)
+    : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh)),
+      m_face_count(num_faces(mesh)), m_corner_count(0)
   {
     for(halfedge_descriptor h : halfedges(mesh))
       if(!CGAL::is_border(h, mesh))
@@ -90,18 +86,19 @@ public:
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    internal::for_each_element_of(m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-                                  [&](vertex_descriptor v) {
-                                    visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-                                  });
-    internal::for_each_element_of(m_number, [&] { return edges(m_mesh); }, m_edge_count, loop, [&](auto e) {
-      visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
-    });
-    internal::for_each_element_of(m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
-                                  [&](face_descriptor f) {
-                                    visit(m_vertex_count + m_edge_count + m_number(f),
-                                          [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
-                                  });
+    internal::for_each_element_of(
+      m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
+      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); }); });
+    internal::for_each_element_of(
+      m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
+      [&](auto e) {
+        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+      });
+    internal::for_each_element_of(
+      m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
+      [&](face_descriptor f) {
+        visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+      });
   }
 
   /*
@@ -153,11 +150,10 @@ public:
       internal::for_each_element_of(m_number, faces, m_face_count, loop, write_corners);
     } else { // in face order, in this thread
       std::size_t running = 0;
-      internal::for_each_element_of(m_number, faces, m_face_count, internal::Parallel_loop(1),
-                                    [&](face_descriptor f) {
-                                      s.first_corner[m_number(f)] = static_cast<Index>(running);
-                                      running += write_corners(f);
-                                    });
+      internal::for_each_element_of(m_number, faces, m_face_count, internal::Parallel_loop(1), [&](face_descriptor f) {
+        s.first_corner[m_number(f)] = static_cast<Index>(running);
+        running += write_corners(f);
+      });
     }
     s.first_corner[m_face_count] = static_cast<Index>(m_corner_count);
     if(border && m_corner_count != 2 * m_edge_count)

@@ -368,11 +368,11 @@ private:
   std::size_t m_face_count;
   std::size_t m_border_edges = 0;
   bool m_refine_border = false;
-  std::vector<Index> m_slot;          // spoke slot of each halfedge (mesh with border)
+  std::vector<Index> m_slot;                    // spoke slot of each halfedge (mesh with border)
   std::vector<halfedge_descriptor> m_border_in; // the border halfedge ending at each vertex, if any
-  std::vector<Index> m_face_vertex;   // refining step: face point, or p1 of a border face
-  std::vector<Index> m_face_of_point; // refining step: the face of each face point
-  std::vector<Index> m_edge_of_border_face; // refining step: the border edge of each border face
+  std::vector<Index> m_face_vertex;             // refining step: face point, or p1 of a border face
+  std::vector<Index> m_face_of_point;           // refining step: the face of each face point
+  std::vector<Index> m_edge_of_border_face;     // refining step: the border edge of each border face
 };
 
 } // namespace Subdiv

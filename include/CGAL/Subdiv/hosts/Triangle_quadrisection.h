@@ -47,13 +47,9 @@ public:
   static constexpr int new_face_size = 3;
 
   explicit Triangle_quadrisection(const Mesh& mesh)
-    : m_mesh(mesh),
-      m_number(mesh),
-      m_vertex_count(num_vertices(mesh)),
-      m_edge_count(num_edges(mesh)),
+    : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh)),
       m_face_count(num_faces(mesh))
-  {
-  }
+  {}
 
   std::size_t number_of_new_vertices() const { return m_vertex_count + m_edge_count; }
   std::size_t number_of_new_edges() const { return 2 * m_edge_count + 3 * m_face_count; }
@@ -72,13 +68,14 @@ public:
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
-    internal::for_each_element_of(m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-                                  [&](vertex_descriptor v) {
-                                    visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-                                  });
-    internal::for_each_element_of(m_number, [&] { return edges(m_mesh); }, m_edge_count, loop, [&](auto e) {
-      visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
-    });
+    internal::for_each_element_of(
+      m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
+      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); }); });
+    internal::for_each_element_of(
+      m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
+      [&](auto e) {
+        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+      });
   }
 
   /// what the new faces are made from: the corners of the old faces (from
@@ -93,12 +90,14 @@ public:
     s.face_count = m_face_count;
     s.face_size = 3;
     s.corners.resize_for_overwrite(3 * m_face_count);
-    internal::for_each_element_of(m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop, [&](auto f) {
-      halfedge_descriptor h = halfedge(f, m_mesh);
-      const std::size_t c = 3 * m_number(f);
-      for(std::size_t k = 0; k < 3; ++k, h = next(h, m_mesh))
-        s.corners[c + k] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
-    });
+    internal::for_each_element_of(
+      m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
+      [&](auto f) {
+        halfedge_descriptor h = halfedge(f, m_mesh);
+        const std::size_t c = 3 * m_number(f);
+        for(std::size_t k = 0; k < 3; ++k, h = next(h, m_mesh))
+          s.corners[c + k] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
+      });
     if(border && 3 * m_face_count != 2 * m_edge_count)
       internal::snapshot_border(m_mesh, m_number, 2 * m_edge_count, s);
     return s;

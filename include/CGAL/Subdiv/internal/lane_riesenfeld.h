@@ -19,7 +19,10 @@ namespace internal {
 // This is the one place where the rule lives: Uniform_bspline_scheme derives
 // its masks by running it on unit impulses, and lane_riesenfeld_refine runs it
 // on points.
-inline int lane_riesenfeld_shift(int degree) { return (degree - 1) / 2; }
+inline int lane_riesenfeld_shift(int degree)
+{
+  return (degree - 1) / 2;
+}
 
 // periodic sequence of n values -> periodic sequence of 2n values
 template <class T, class Average>

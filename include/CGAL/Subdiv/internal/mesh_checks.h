@@ -6,13 +6,13 @@
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/Surface_mesh/Surface_mesh.h>
 
+#include <unistd.h>
 #include <cstddef>
 #include <string>
-#include <unistd.h>
 
 namespace CGAL {
 namespace Subdiv {

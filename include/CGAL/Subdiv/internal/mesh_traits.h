@@ -14,8 +14,8 @@ namespace Subdiv {
 namespace internal {
 
 template <class Mesh>
-using Mesh_point = typename boost::property_traits<
-  typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type;
+using Mesh_point =
+  typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type;
 
 /// the number type of the points of a mesh (the default FT of its masks)
 template <class Mesh>

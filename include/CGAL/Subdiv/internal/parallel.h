@@ -11,12 +11,12 @@
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_group.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 #endif
 
 namespace CGAL {
@@ -46,7 +46,10 @@ public:
 #endif
   }
 
-  int threads() const { return m_threads; }
+  int threads() const
+  {
+    return m_threads;
+  }
 
   bool is_parallel() const
   {
@@ -168,8 +171,7 @@ private:
 
 /// the tag of the named parameter `threads` (see `CGAL::Subdiv::threads()`)
 struct threads_t
-{
-};
+{};
 
 template <class NamedParameters>
 Parallel_loop parallel_loop(const NamedParameters& np)
@@ -191,8 +193,8 @@ Parallel_loop parallel_loop(const NamedParameters& np)
  * `threads(2, CGAL::parameters::number_of_iterations(3))`.
  */
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
-CGAL::Named_function_parameters<int, internal::threads_t, NamedParameters>
-threads(int n, const NamedParameters& np = CGAL::parameters::default_values())
+CGAL::Named_function_parameters<int, internal::threads_t, NamedParameters> threads(
+  int n, const NamedParameters& np = CGAL::parameters::default_values())
 {
   return {n, np};
 }

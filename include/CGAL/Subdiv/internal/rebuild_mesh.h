@@ -149,8 +149,14 @@ private:
  * and 4e+2 along halfedge(e), 4e+3 and 4e+1 against it. `id` is the old
  * halfedge's ordinal (2e along halfedge(e), 2e+1 against it).
  */
-inline std::size_t first_half(std::size_t id) { return (id & 1) == 0 ? 2 * id : 2 * id + 1; }
-inline std::size_t second_half(std::size_t id) { return (id & 1) == 0 ? 2 * id + 2 : 2 * id - 1; }
+inline std::size_t first_half(std::size_t id)
+{
+  return (id & 1) == 0 ? 2 * id : 2 * id + 1;
+}
+inline std::size_t second_half(std::size_t id)
+{
+  return (id & 1) == 0 ? 2 * id + 2 : 2 * id - 1;
+}
 
 /*
  * What an edge split needs of the old mesh to make the new faces, instead of
@@ -193,12 +199,14 @@ template <class Mesh, class Numbering>
 void snapshot_border(const Mesh& mesh, const Numbering& number, std::size_t halfedge_count, Split_snapshot& snapshot)
 {
   using Index = Split_snapshot::Index;
-  for_each_element_of(number, [&] { return halfedges(mesh); }, halfedge_count, Parallel_loop(1), [&](auto h) {
-    if(is_border(h, mesh))
-      snapshot.border.push_back(
-        Split_snapshot::Border{static_cast<Index>(number(h)), static_cast<Index>(number(target(h, mesh))),
-                               static_cast<Index>(number(next(h, mesh)))});
-  });
+  for_each_element_of(
+    number, [&] { return halfedges(mesh); }, halfedge_count, Parallel_loop(1),
+    [&](auto h) {
+      if(is_border(h, mesh))
+        snapshot.border.push_back(Split_snapshot::Border{static_cast<Index>(number(h)),
+                                                         static_cast<Index>(number(target(h, mesh))),
+                                                         static_cast<Index>(number(next(h, mesh)))});
+    });
 }
 
 /// the soup of an edge split, expanded from the snapshot by the host's
@@ -326,7 +334,6 @@ void set_descriptors(const CGAL::Surface_mesh<P>&, const Face_soup& soup,
       new_faces->push_back(typename SM::Face_index(static_cast<typename SM::size_type>(f)));
   }
 }
-
 
 /*
  * Surface_mesh: the halfedges, faces and vertices of a mesh already resized

@@ -70,8 +70,8 @@ void butterfly_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::hal
 // The four-point rule with tension w along the border edge of h:
 // -w, 1/2 + w, 1/2 + w, -w over the border polygon.
 template <class Mesh, class FT, class Accumulator>
-void four_point_border_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h,
-                               const FT& w, Accumulator& acc)
+void four_point_border_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h, const FT& w,
+                               Accumulator& acc)
 {
   const auto border = CGAL::is_border(h, mesh) ? h : opposite(h, mesh);
   const FT inner = FT(1) / FT(2) + w;
@@ -142,8 +142,8 @@ struct Modified_butterfly_weights
       ring[2] = FT(-1) / FT(8);
     } else {
       for(int j = 0; j < k; ++j) {
-        const FT sum = FT(1) / FT(4) + internal::cos_two_pi_fraction<FT>(j, k) +
-                       internal::cos_two_pi_fraction<FT>(2 * j, k) / FT(2);
+        const FT sum =
+          FT(1) / FT(4) + internal::cos_two_pi_fraction<FT>(j, k) + internal::cos_two_pi_fraction<FT>(2 * j, k) / FT(2);
         ring[j] = sum / FT(k);
       }
     }

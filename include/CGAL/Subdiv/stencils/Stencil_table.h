@@ -23,23 +23,19 @@ namespace internal {
 
 template <class T, class = void>
 struct Is_point : std::false_type
-{
-};
+{};
 template <class T>
 struct Is_point<T, std::void_t<decltype(std::declval<const T&>() - CGAL::ORIGIN)>> : std::true_type
-{
-};
+{};
 
 template <class T, class = void>
 struct Is_double_point_3 : std::false_type
-{
-};
+{};
 template <class T>
 struct Is_double_point_3<T, std::void_t<typename CGAL::Kernel_traits<T>::Kernel::Point_3>>
   : std::bool_constant<std::is_same<typename CGAL::Kernel_traits<T>::Kernel::Point_3, T>::value &&
                        std::is_same<typename CGAL::Kernel_traits<T>::Kernel::FT, double>::value>
-{
-};
+{};
 
 struct Stencil_table_access;
 
@@ -100,8 +96,8 @@ public:
   /// throws `Bad_input` unless `n` is the number of sources
   void check_sources(std::size_t n) const
   {
-    internal::require(n == m_sources, "the stencil table needs " + std::to_string(m_sources) +
-                                        " source values, got " + std::to_string(n));
+    internal::require(n == m_sources, "the stencil table needs " + std::to_string(m_sources) + " source values, got " +
+                                        std::to_string(n));
   }
   std::size_t number_of_sources() const { return m_sources; }
   std::size_t number_of_terms() const { return m_indices.size(); }
@@ -121,8 +117,8 @@ public:
   Stencil_table then(const Stencil_table& finer) const
   {
     internal::require(finer.number_of_sources() == number_of_stencils(),
-                      "stencil tables do not chain: " + std::to_string(finer.number_of_sources()) +
-                        " sources after " + std::to_string(number_of_stencils()) + " stencils");
+                      "stencil tables do not chain: " + std::to_string(finer.number_of_sources()) + " sources after " +
+                        std::to_string(number_of_stencils()) + " stencils");
     Stencil_table result(m_sources);
     result.reserve(finer.number_of_stencils(), finer.number_of_terms() * 4);
     std::vector<FT> sum(m_sources, FT(0));
@@ -184,8 +180,9 @@ public:
    */
   void apply(const double* in, double* out, std::size_t dimension, int threads = 1) const
   {
-    apply_flat(dimension, [in, dimension](Index s) { return in + std::size_t(s) * dimension; },
-               [out, dimension](std::size_t i) { return out + i * dimension; }, threads);
+    apply_flat(
+      dimension, [in, dimension](Index s) { return in + std::size_t(s) * dimension; },
+      [out, dimension](std::size_t i) { return out + i * dimension; }, threads);
   }
 
   /// the same on `std::array<double, N>` values
@@ -197,8 +194,8 @@ public:
     out.resize(number_of_stencils());
     const std::array<double, N>* source = in.data();
     std::array<double, N>* target = out.data();
-    apply_flat(N, [source](Index s) { return source[s].data(); }, [target](std::size_t i) { return target[i].data(); },
-               threads);
+    apply_flat(
+      N, [source](Index s) { return source[s].data(); }, [target](std::size_t i) { return target[i].data(); }, threads);
   }
 
   /// evaluates stencils [first, last) only (e.g. one chunk per thread)
@@ -314,11 +311,20 @@ private:
     static_assert(std::is_same<FT, double>::value, "the flat apply needs a table of double weights");
     internal::Parallel_loop(threads).for_range(number_of_stencils(), 4096, [&](std::size_t first, std::size_t last) {
       switch(dimension) {
-        case 1: apply_rows<1>(first, last, 1, in, out); break;
-        case 2: apply_rows<2>(first, last, 2, in, out); break;
-        case 3: apply_rows<3>(first, last, 3, in, out); break;
-        case 4: apply_rows<4>(first, last, 4, in, out); break;
-        default: apply_rows<0>(first, last, dimension, in, out);
+        case 1:
+          apply_rows<1>(first, last, 1, in, out);
+          break;
+        case 2:
+          apply_rows<2>(first, last, 2, in, out);
+          break;
+        case 3:
+          apply_rows<3>(first, last, 3, in, out);
+          break;
+        case 4:
+          apply_rows<4>(first, last, 4, in, out);
+          break;
+        default:
+          apply_rows<0>(first, last, dimension, in, out);
       }
     });
   }

@@ -169,10 +169,10 @@ void limit_rows(const Evaluator& evaluator, const Mesh& mesh, const std::vector<
  */
 template <template <class, class> class MaskTemplate, class... Args, class PolygonMesh,
           class NamedParameters = parameters::Default_named_parameters>
-Limit_stencil_tables make_limit_stencil_tables(const PolygonMesh& mesh, int levels,
-                                               const Limit_evaluator<MaskTemplate, Args...>& evaluator,
-                                               typename internal::Non_deduced<PolygonMesh>::type* refined_mesh = nullptr,
-                                               const NamedParameters& np = parameters::default_values())
+Limit_stencil_tables make_limit_stencil_tables(
+  const PolygonMesh& mesh, int levels, const Limit_evaluator<MaskTemplate, Args...>& evaluator,
+  typename internal::Non_deduced<PolygonMesh>::type* refined_mesh = nullptr,
+  const NamedParameters& np = parameters::default_values())
 {
   using Mask = MaskTemplate<PolygonMesh, double>;
   using Host = typename Mask::Host;

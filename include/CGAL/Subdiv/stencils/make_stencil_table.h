@@ -32,11 +32,20 @@ struct Non_deduced
 struct Stencil_table_access
 {
   template <class FT>
-  static auto& ends(Stencil_table<FT>& t) { return t.m_ends; }
+  static auto& ends(Stencil_table<FT>& t)
+  {
+    return t.m_ends;
+  }
   template <class FT>
-  static auto& indices(Stencil_table<FT>& t) { return t.m_indices; }
+  static auto& indices(Stencil_table<FT>& t)
+  {
+    return t.m_indices;
+  }
   template <class FT>
-  static auto& weights(Stencil_table<FT>& t) { return t.m_weights; }
+  static auto& weights(Stencil_table<FT>& t)
+  {
+    return t.m_weights;
+  }
 };
 
 // records a mask's weights by ordinal of the old vertex
@@ -224,8 +233,7 @@ public:
   Chunked_loop(const Parallel_loop& loop, std::size_t piece, std::size_t room_per_row,
                std::vector<std::unique_ptr<Row_chunk<FT>>>& chunks, Per_thread<Compose_scratch<FT>>& scratches)
     : Parallel_loop(loop), m_piece(piece), m_room_per_row(room_per_row), m_chunks(chunks), m_scratches(scratches)
-  {
-  }
+  {}
 
   template <class F>
   void for_range(std::size_t n, std::size_t, const F& f) const
@@ -375,20 +383,23 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
     Per_thread<Compose_scratch<FT>> scratches;
     const std::size_t piece = 4096;
     const Chunked_loop<FT> chunked(loop, piece, room_per_row, chunks, scratches);
-    host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-      Row_chunk<FT>* chunk = current_chunk<FT>();
-      if(chunk == nullptr || !chunk->in_order)
-        return;
-      if(chunk->rows == 0)
-        chunk->first = j;
-      else if(j != chunk->first + chunk->rows) {
-        chunk->in_order = false;
-        return;
-      }
-      Row_sink<FT>& sink = chunk->sink;
-      sink.close(compose(*chunk->scratch, report, [&](std::size_t most) { return sink.open(most); }));
-      ++chunk->rows;
-    }, chunked);
+    host.for_each_new_vertex(
+      mask,
+      [&](std::size_t j, const auto& report) {
+        Row_chunk<FT>* chunk = current_chunk<FT>();
+        if(chunk == nullptr || !chunk->in_order)
+          return;
+        if(chunk->rows == 0)
+          chunk->first = j;
+        else if(j != chunk->first + chunk->rows) {
+          chunk->in_order = false;
+          return;
+        }
+        Row_sink<FT>& sink = chunk->sink;
+        sink.close(compose(*chunk->scratch, report, [&](std::size_t most) { return sink.open(most); }));
+        ++chunk->rows;
+      },
+      chunked);
     // the chunks must hold every row once, in order
     std::vector<std::size_t> offsets(chunks.size() + 1, 0);
     bool whole = true;
@@ -430,10 +441,13 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
       return std::make_pair(scratch.indices.data(), scratch.weights.data());
     };
   };
-  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-    Compose_scratch<FT>& scratch = scratches.local();
-    ends[j] = compose(scratch, report, in_scratch(scratch));
-  }, loop);
+  host.for_each_new_vertex(
+    mask,
+    [&](std::size_t j, const auto& report) {
+      Compose_scratch<FT>& scratch = scratches.local();
+      ends[j] = compose(scratch, report, in_scratch(scratch));
+    },
+    loop);
   std::size_t total = 0;
   for(std::size_t j = 0; j < rows; ++j) {
     total += ends[j];
@@ -443,13 +457,16 @@ Stencil_table<FT> compose_level(const Host& host, const Mask& mask, const Number
   resize_for_overwrite(weights, total);
   Index* out_indices = indices.data();
   FT* out_weights = weights.data();
-  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
-    Compose_scratch<FT>& scratch = scratches.local();
-    const std::size_t t = j == 0 ? 0 : ends[j - 1];
-    const std::size_t count = compose(scratch, report, in_scratch(scratch));
-    std::copy(scratch.indices.data(), scratch.indices.data() + count, out_indices + t);
-    std::copy(scratch.weights.data(), scratch.weights.data() + count, out_weights + t);
-  }, loop);
+  host.for_each_new_vertex(
+    mask,
+    [&](std::size_t j, const auto& report) {
+      Compose_scratch<FT>& scratch = scratches.local();
+      const std::size_t t = j == 0 ? 0 : ends[j - 1];
+      const std::size_t count = compose(scratch, report, in_scratch(scratch));
+      std::copy(scratch.indices.data(), scratch.indices.data() + count, out_indices + t);
+      std::copy(scratch.weights.data(), scratch.weights.data() + count, out_weights + t);
+    },
+    loop);
   return table;
 }
 
@@ -472,8 +489,7 @@ void refine_topology(const Host& host, CGAL::Surface_mesh<P>& mesh, const Vertex
     const std::size_t old_vertices = num_vertices(mesh);
     const Split_snapshot snapshot = host.snapshot(loop, true);
     mesh.resize(static_cast<size_type>(host.number_of_new_vertices()),
-                static_cast<size_type>(host.number_of_new_edges()),
-                static_cast<size_type>(host.number_of_new_faces()));
+                static_cast<size_type>(host.number_of_new_edges()), static_cast<size_type>(host.number_of_new_faces()));
     wire_split(mesh, host, snapshot, old_vertices, loop);
   } else {
     const Face_soup soup = host.faces(loop, false);
@@ -492,9 +508,8 @@ Stencil_table<typename Mask::Number_type> refine_topology_once(Mesh& mesh, const
   using FT = typename Mask::Number_type;
   const typename Mask::Host host(mesh);
   const Mesh_numbering<Mesh> number(mesh);
-  Stencil_table<FT> table =
-    compose_level<FT>(host, mask, number, static_cast<const Stencil_table<FT>*>(nullptr), num_vertices(mesh),
-                      Parallel_loop(1));
+  Stencil_table<FT> table = compose_level<FT>(host, mask, number, static_cast<const Stencil_table<FT>*>(nullptr),
+                                              num_vertices(mesh), Parallel_loop(1));
   refine_topology(host, mesh, vpm, Parallel_loop(1));
   return table;
 }
@@ -528,17 +543,17 @@ Stencil_table<typename Mask::Number_type> refine_topology_once(Mesh& mesh, const
  * \throws Bad_input as `subdivide()` does.
  */
 template <class PolygonMesh, class Mask, class NamedParameters = parameters::Default_named_parameters>
-Stencil_table<typename Mask::Number_type>
-make_stencil_table(const PolygonMesh& mesh, const Mask& mask, int levels,
-                   typename internal::Non_deduced<PolygonMesh>::type* refined_mesh = nullptr,
-                   const NamedParameters& np = parameters::default_values())
+Stencil_table<typename Mask::Number_type> make_stencil_table(
+  const PolygonMesh& mesh, const Mask& mask, int levels,
+  typename internal::Non_deduced<PolygonMesh>::type* refined_mesh = nullptr,
+  const NamedParameters& np = parameters::default_values())
 {
   using FT = typename Mask::Number_type;
   using Host = typename Mask::Host;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
+  const auto vpm =
+    choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, mesh));
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
 
@@ -585,9 +600,8 @@ make_stencil_table(const PolygonMesh& mesh, const Mask& mask, int levels,
 /// `make_stencil_table(mesh, mask, levels, nullptr, np)`:
 /// `make_stencil_table(mesh, mask, 3, CGAL::Subdiv::threads(2))`
 template <class PolygonMesh, class Mask, class T, class Tag, class Base>
-Stencil_table<typename Mask::Number_type>
-make_stencil_table(const PolygonMesh& mesh, const Mask& mask, int levels,
-                   const CGAL::Named_function_parameters<T, Tag, Base>& np)
+Stencil_table<typename Mask::Number_type> make_stencil_table(const PolygonMesh& mesh, const Mask& mask, int levels,
+                                                             const CGAL::Named_function_parameters<T, Tag, Base>& np)
 {
   return make_stencil_table(mesh, mask, levels, static_cast<PolygonMesh*>(nullptr), np);
 }
