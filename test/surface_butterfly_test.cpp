@@ -145,7 +145,7 @@ template <class Mask>
 Recorder edge_stencil(const Mask& mask, const EMesh& mesh, EMesh::Halfedge_index h)
 {
   Recorder s;
-  mask.edge_node(mesh, h, s);
+  mask.edge_node(S::edge_view(mask, mesh, h), s);
   return s;
 }
 
@@ -183,7 +183,7 @@ void expect_affine_stencils(const Mask& mask, const EMesh& mesh, const std::stri
 {
   for(V v : vertices(mesh)) {
     Recorder s;
-    mask.vertex_node(mesh, v, s);
+    mask.vertex_node(S::vertex_view(mask, mesh, v), s);
     EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", vertex " << v.idx();
     if(mask.is_interpolating())
       EXPECT_EQ(s.weight(v), FT(1));

@@ -106,7 +106,7 @@ void check_scheme(const Mask& mask, const Mesh& mesh, bool interpolating)
   const std::string name = mask.name();
 
   // every new vertex's weights sum to 1 (exactly in exact kernels)
-  const typename Mask::Host host(mesh);
+  const S::Host_of<Mask> host(mesh);
   host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
     S::Stencil<typename Mesh::Vertex_index, FT> stencil;
     report(stencil);

@@ -285,12 +285,12 @@ TEST(ProjectToLimit, border_vertices_are_on_the_cubic_bspline)
   SD::project_to_limit<Warren_loop>(limit);
   int border = 0;
   for(auto v : mesh.vertices()) {
-    const auto walk = SD::internal::border_halfedges_at(v, mesh);
-    if(walk.first == Exact_mesh::null_halfedge())
+    const SD::Vertex_view<Exact_mesh> view(mesh, v);
+    if(!view.on_border())
       continue;
     ++border;
-    const auto& prev = mesh.point(mesh.source(walk.first));
-    const auto& next = mesh.point(mesh.target(walk.second));
+    const auto& prev = mesh.point(mesh.source(view.border_in()));
+    const auto& next = mesh.point(mesh.target(view.border_out()));
     const auto& p = mesh.point(v);
     const QK::Point_3 expected((prev.x() + Q(4) * p.x() + next.x()) / Q(6), (prev.y() + Q(4) * p.y() + next.y()) / Q(6),
                                (prev.z() + Q(4) * p.z() + next.z()) / Q(6));
@@ -397,12 +397,12 @@ TEST(ProjectToLimit, sqrt3_border_agrees_with_deep_refinement)
   // faces) contracts by (2 + 2 cos(pi / 4)) / 9 = 0.38 per pair
   EXPECT_LE(worst, 5 * std::pow(0.38, 4));
   for(V v : mesh.vertices()) {
-    const auto walk = SD::internal::border_halfedges_at(v, mesh);
-    if(walk.first == Mesh::null_halfedge())
+    const SD::Vertex_view<Mesh> view(mesh, v);
+    if(!view.on_border())
       continue;
-    const auto& p = mesh.point(mesh.source(walk.first));
+    const auto& p = mesh.point(mesh.source(view.border_in()));
     const auto& q = mesh.point(v);
-    const auto& r = mesh.point(mesh.target(walk.second));
+    const auto& r = mesh.point(mesh.target(view.border_out()));
     const K::Point_3 expected((p.x() + 4 * q.x() + r.x()) / 6, (p.y() + 4 * q.y() + r.y()) / 6,
                               (p.z() + 4 * q.z() + r.z()) / 6);
     EXPECT_LT(distance(limit.point(v), expected), 1e-14) << "vertex " << v.idx();

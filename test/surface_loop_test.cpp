@@ -225,12 +225,12 @@ void expect_every_stencil_sums_to_one(const Exact_mesh& mesh, const Mask& mask)
 {
   for(auto v : vertices(mesh)) {
     S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
-    mask.vertex_node(mesh, v, stencil);
+    mask.vertex_node(S::vertex_view(mask, mesh, v), stencil);
     EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " vertex " << v;
   }
   for(auto e : edges(mesh)) {
     S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
-    mask.edge_node(mesh, halfedge(e, mesh), stencil);
+    mask.edge_node(S::edge_view(mask, mesh, halfedge(e, mesh)), stencil);
     EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " edge " << e;
   }
 }
@@ -251,11 +251,12 @@ TEST(Loop, vertex_weights_of_loop_and_warren)
   EXPECT_EQ(S::Warren_beta::beta<EFT>(8), EFT(3) / EFT(64));
   const Exact_mesh mesh = bipyramid(8);
   S::Stencil<Exact_mesh::Vertex_index, EFT> apex, low_valence;
-  S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>().vertex_node(mesh, Exact_mesh::Vertex_index(0), apex);
+  const S::Loop_mask<Exact_mesh, EFT, S::Warren_beta> warren;
+  warren.vertex_node(S::vertex_view(warren, mesh, Exact_mesh::Vertex_index(0)), apex);
   EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(0)), EFT(5) / EFT(8));
   EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(64));
   const Exact_mesh tetra_like = bipyramid(3); // apexes of valence 3: 7/16 and 3/16
-  S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>().vertex_node(tetra_like, Exact_mesh::Vertex_index(0), low_valence);
+  warren.vertex_node(S::vertex_view(warren, tetra_like, Exact_mesh::Vertex_index(0)), low_valence);
   EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(0)), EFT(7) / EFT(16));
   EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(16));
 }

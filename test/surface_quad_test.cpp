@@ -213,7 +213,7 @@ using Stencil = S::Stencil<VX, FX>;
 template <class Mask>
 void expect_weights_sum_to_one(const Exact_mesh& mesh, const Mask& mask)
 {
-  const typename Mask::Host host(mesh);
+  const S::Host_of<Mask> host(mesh);
   std::size_t count = 0;
   host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
     Stencil stencil;
@@ -293,7 +293,7 @@ TEST(CatmullClark, regular_grid_rules_are_the_bicubic_bspline_rules)
     for(int j = 2; j <= 4; ++j) {
       // vertex (i, j)
       Stencil ours, tensor, notes;
-      mask.vertex_node(mesh, id[i][j], ours);
+      mask.vertex_node(S::vertex_view(mask, mesh, id[i][j]), ours);
       for(int a = -1; a <= 1; ++a)
         for(int b = -1; b <= 1; ++b)
           tensor.add(id[i + a][j + b], vertex_mask(a) * vertex_mask(b));
@@ -311,7 +311,7 @@ TEST(CatmullClark, regular_grid_rules_are_the_bicubic_bspline_rules)
 
       // edge (i, j) - (i + 1, j), between cells (i, j - 1) and (i, j)
       Stencil ours_edge, tensor_edge, notes_edge;
-      mask.edge_node(mesh, halfedge(id[i][j], id[i + 1][j], mesh).first, ours_edge);
+      mask.edge_node(S::edge_view(mask, mesh, halfedge(id[i][j], id[i + 1][j], mesh).first), ours_edge);
       for(int a = 0; a <= 1; ++a)
         for(int b = -1; b <= 1; ++b)
           tensor_edge.add(id[i + a][j + b], edge_mask(a) * vertex_mask(b));
@@ -324,7 +324,7 @@ TEST(CatmullClark, regular_grid_rules_are_the_bicubic_bspline_rules)
 
       // face of cell (i, j)
       Stencil ours_face, tensor_face;
-      mask.face_node(mesh, face(halfedge(id[i][j], id[i + 1][j], mesh).first, mesh), ours_face);
+      mask.face_node(S::face_view(mask, mesh, face(halfedge(id[i][j], id[i + 1][j], mesh).first, mesh)), ours_face);
       for(int a = 0; a <= 1; ++a)
         for(int b = 0; b <= 1; ++b)
           tensor_face.add(id[i + a][j + b], edge_mask(a) * edge_mask(b));
@@ -338,7 +338,7 @@ TEST(DooSabin, quad_weights_are_the_biquadratic_bspline_weights)
   std::vector<std::vector<VX>> id;
   const Exact_mesh mesh = grid(4, id);
   Stencil ours;
-  S::Doo_sabin_mask<Exact_mesh>().corner_node(mesh, halfedge(id[1][1], id[2][1], mesh).first, ours);
+  S::Doo_sabin_mask<Exact_mesh>().corner_node(S::Corner_view<Exact_mesh>(mesh, halfedge(id[1][1], id[2][1], mesh).first), ours);
   EXPECT_EQ(ours.size(), 4u);
   EXPECT_EQ(ours.weight(id[2][1]), FX(9) / FX(16));
   EXPECT_EQ(ours.weight(id[1][1]), FX(3) / FX(16));

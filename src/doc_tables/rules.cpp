@@ -56,7 +56,7 @@ template <template <class, class> class MaskTemplate>
 std::vector<Rule> rules_of(int n, bool boundary)
 {
   using Mask = MaskTemplate<Mesh, Exact>;
-  using Traits = S::Analysis_host_traits<typename Mask::Host>;
+  using Traits = S::Host_of<Mask>;
   const Mask mask;
   const SI::Patch patch = SI::analysis_patch(mask, n, boundary, patch_rings + 2);
   const SI::Labelling labels = SI::label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, patch_rings);
@@ -71,46 +71,46 @@ std::vector<Rule> rules_of(int n, bool boundary)
   if constexpr(Traits::face_centred) { // dual: the new vertex of corner 0 of the central n-gon
     if(!boundary) {
       record("corner", "The new vertex of corner 0 of the central face (labels 0..n-1: its corners)",
-             [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
+             [&](auto& acc) { mask.corner_node(S::Corner_view<Mesh>(mesh, mesh.prev(h)), acc); });
     } else { // the border face made from a border vertex with n faces
       record("border corner",
              "The new vertex of corner 0 of the central border face (labels 0..m-1: its corners, from the first "
              "one after its border edges): on the border",
-             [&](auto& acc) { mask.corner_node(mesh, mesh.prev(h), acc); });
+             [&](auto& acc) { mask.corner_node(S::Corner_view<Mesh>(mesh, mesh.prev(h)), acc); });
       record("interior corner", "The new vertex of corner 1 of the central border face",
-             [&](auto& acc) { mask.corner_node(mesh, h, acc); });
+             [&](auto& acc) { mask.corner_node(S::Corner_view<Mesh>(mesh, h), acc); });
       if(n == 1)
         record("corner with a single face", "The new vertex of corner 3 of the corner face, the corner of the mesh",
-               [&](auto& acc) { mask.corner_node(mesh, mesh.prev(mesh.prev(h)), acc); });
+               [&](auto& acc) { mask.corner_node(S::Corner_view<Mesh>(mesh, mesh.prev(mesh.prev(h))), acc); });
     }
-  } else if constexpr(Traits::steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
+  } else if constexpr(Traits::analysis_steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
     if(boundary) {
       record("border vertex (refining step)",
              "The new position of the centre (label 0) on a step that refines the border",
-             [&](auto& acc) { mask.border_vertex_node(mesh, mesh.opposite(h), acc); });
+             [&](auto& acc) { mask.border_vertex_node(S::Vertex_view<Mesh>(mesh, mesh.source(h)), acc); });
       record("border vertex (resting step)", "The new position of the centre on a step that leaves the border alone",
-             [&](auto& acc) { mask.resting_border_vertex_node(mesh, mesh.source(h), acc); });
+             [&](auto& acc) { mask.resting_border_vertex_node(S::Vertex_view<Mesh>(mesh, mesh.source(h)), acc); });
       record("border edge, first third",
              "The new vertex at 1/3 of the border edge from the centre to label 1 (refining step)",
-             [&](auto& acc) { mask.border_edge_node(mesh, h, 1, acc); });
+             [&](auto& acc) { mask.border_edge_node(S::Edge_view<Mesh>(mesh, h), 1, acc); });
       record("border edge, second third",
              "The new vertex at 2/3 of the border edge from the centre to label 1 (refining step)",
-             [&](auto& acc) { mask.border_edge_node(mesh, h, 2, acc); });
+             [&](auto& acc) { mask.border_edge_node(S::Edge_view<Mesh>(mesh, h), 2, acc); });
     } else {
       record("vertex", "The new position of the centre (label 0)",
-             [&](auto& acc) { mask.vertex_node(mesh, mesh.source(h), acc); });
+             [&](auto& acc) { mask.vertex_node(S::Vertex_view<Mesh>(mesh, mesh.source(h)), acc); });
     }
-    record("face", "The new vertex of the face (0, 1, 2)", [&](auto& acc) { mask.face_node(mesh, mesh.face(h), acc); });
+    record("face", "The new vertex of the face (0, 1, 2)", [&](auto& acc) { mask.face_node(S::Face_view<Mesh>(mesh, mesh.face(h)), acc); });
   } else {
     const std::string prefix = boundary ? "border " : "";
     record(prefix + "vertex", "The new position of the centre (label 0)",
-           [&](auto& acc) { mask.vertex_node(mesh, mesh.source(h), acc); });
+           [&](auto& acc) { mask.vertex_node(S::Vertex_view<Mesh>(mesh, mesh.source(h)), acc); });
     record(prefix + "edge", "The new vertex of the edge from the centre to label 1",
-           [&](auto& acc) { mask.edge_node(mesh, h, acc); });
-    if constexpr(Traits::face_size == 4)
+           [&](auto& acc) { mask.edge_node(S::Edge_view<Mesh>(mesh, h), acc); });
+    if constexpr(Traits::regular_face_size == 4)
       if(!boundary || !mesh.is_border(h))
         record("face", "The new vertex of the face (0, 1, 2, 3)",
-               [&](auto& acc) { mask.face_node(mesh, mesh.face(h), acc); });
+               [&](auto& acc) { mask.face_node(S::Face_view<Mesh>(mesh, mesh.face(h)), acc); });
   }
   return rules;
 }

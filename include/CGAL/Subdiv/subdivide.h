@@ -6,6 +6,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
@@ -142,7 +143,7 @@ constexpr bool is_double_point_3()
 template <class Mask, class Mesh, class VertexPointMap>
 void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const Parallel_loop& = Parallel_loop())
 {
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
   const Host host(mesh);
   std::vector<Point> points(host.number_of_new_vertices());
@@ -304,7 +305,7 @@ void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPoin
 {
   using SM = CGAL::Surface_mesh<P>;
   using size_type = typename SM::size_type;
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   const Host host(mesh);
   const std::size_t old_vertices = num_vertices(mesh);
   if constexpr(Wires_from_snapshot<Host>::value) {
@@ -329,7 +330,7 @@ void refine_once(CGAL::Surface_mesh<P>& mesh, const Mask& mask, const VertexPoin
 template <class Mask, class Mesh, class VertexPointMap, class FT>
 void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const Carried_data<Mesh, FT>& data)
 {
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
   const Host host(mesh);
   typename Carried_data<Mesh, FT>::Vertex_stencils stencils(host.number_of_new_vertices());
@@ -360,7 +361,7 @@ void refine_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm, const 
 /*!
  * \ingroup PkgSubdivFunctions
  * refines `mesh` in place `number_of_iterations` times with the rules of
- * `mask` on the topological split of `Mask::Host`.
+ * `mask` on the topological split of `Host_of<Mask>`.
  *
  * \tparam PolygonMesh a model of `MutableFaceGraph`
  * \tparam Mask a model of `SurfaceSubdivisionMask` (`Loop_mask`, ...)
@@ -386,7 +387,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
 
   const auto vpm =
     choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh));

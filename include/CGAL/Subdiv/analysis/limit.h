@@ -239,7 +239,7 @@ Vertex_configuration<Mesh> vertex_configuration(typename boost::graph_traits<Mes
 template <template <class, class> class MaskTemplate, class... Args>
 Limit_masks compute_limit_masks(int valence, bool border, const Args&... args)
 {
-  using Traits = Analysis_host_traits<typename MaskTemplate<Analysis_mesh, double>::Host>;
+  using Traits = Host_of<MaskTemplate<Analysis_mesh, double>>;
   Surface_analysis_options options;
   options.characteristic_map = true; // the verdict decides whether the tangent masks are used
   options.verify_limit = false;
@@ -295,7 +295,7 @@ Limit_masks compute_limit_masks(int valence, bool border, const Args&... args)
   }
 
   // the neighbourhood of rings + 1 rings on the analysis' own patch
-  const Patch patch = build_patch(Traits::face_size, false, valence, border, masks.rings + 2);
+  const Patch patch = build_patch(Traits::regular_face_size, false, valence, border, masks.rings + 2);
   Neighbourhood_reader<Analysis_mesh> reader(patch.mesh);
   reader.read(patch.start, masks.rings + 1, patch.mesh.number_of_vertices() + 1);
   masks.connectivity = reader.transcript;
@@ -554,7 +554,7 @@ public:
     using Point = typename boost::property_traits<VPM>::value_type;
     using FT = internal::Point_FT<Point>;
     const auto m = mask<PolygonMesh, FT>();
-    internal::check_mesh(mesh, vpm, m.name(), MaskTemplate<PolygonMesh, FT>::Host::required_face_size);
+    internal::check_mesh(mesh, vpm, m.name(), Host_of<MaskTemplate<PolygonMesh, FT>>::required_face_size);
     if constexpr(Traits::face_centred) {
       std::vector<internal::Vertex_limit<Point>> results;
       evaluate_dual(mesh, vpm, heights, results, caller + " (" + m.name() + ")");
@@ -571,7 +571,7 @@ public:
   }
 
 private:
-  using Traits = Analysis_host_traits<typename MaskTemplate<Analysis_mesh, double>::Host>;
+  using Traits = Host_of<MaskTemplate<Analysis_mesh, double>>;
 
   // weights reported by a mask, scaled
   template <class Vertex, class FT>
@@ -641,7 +641,7 @@ private:
       const std::vector<halfedge_descriptor>& used = border ? border_corners : corners;
       Scaled_weights<vertex_descriptor, FT> acc{&weights, FT(1) / FT(static_cast<int>(used.size()))};
       for(halfedge_descriptor h : used)
-        m.corner_node(mesh, h, acc);
+        m.corner_node(Corner_view<Mesh>(mesh, h), acc);
       internal::Vertex_limit<Point>& r = results.emplace_back();
       Vector sum = CGAL::NULL_VECTOR;
       FT height(0);
@@ -727,7 +727,7 @@ private:
     }
     if(pending.empty())
       return;
-    if(depth >= max_extra_levels + (Traits::steps == 2 ? 1 : 0))
+    if(depth >= max_extra_levels + (Traits::analysis_steps == 2 ? 1 : 0))
       throw Bad_input(caller + ": vertex " + std::to_string(ids[pending.front()]) +
                       ": its neighbourhood does not become the analysed one after " + std::to_string(depth) +
                       " more levels");
@@ -799,8 +799,8 @@ private:
   template <class Mesh>
   static bool border_is_pending(const Mesh& mesh)
   {
-    if constexpr(Traits::steps == 2) {
-      const typename MaskTemplate<Mesh, double>::Host host(mesh);
+    if constexpr(Traits::analysis_steps == 2) {
+      const Host_of<MaskTemplate<Mesh, double>> host(mesh);
       return host.refines_border();
     } else {
       (void)mesh;

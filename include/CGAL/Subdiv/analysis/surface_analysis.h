@@ -440,7 +440,7 @@ template <class DoubleMask, class Result>
 bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const Surface_analysis_options& options,
                                    int big)
 {
-  using Traits = Analysis_host_traits<typename DoubleMask::Host>;
+  using Traits = Host_of<DoubleMask>;
   const std::complex<double> lambda = result.subdominant, lambda2 = result.second_subdominant;
   const bool complex_pair = std::abs(lambda.imag()) > 1e-12;
   const std::complex<double> other = complex_pair ? std::conj(lambda) : lambda2;
@@ -525,7 +525,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
   std::vector<int> rings;
   int outer = 0;
   for(int level = 1; level <= 8; ++level) {
-    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::steps == 2 ? 9 : 4) > options.max_faces && level > 2)
+    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::analysis_steps == 2 ? 9 : 4) > options.max_faces && level > 2)
       break;
     auto step = analysed_step(mesh, start, mask);
     std::vector<char> next_trusted(step.mesh.number_of_vertices(), 0);
@@ -585,7 +585,7 @@ template <class DoubleMask, class Result>
 void verify_limit(const DoubleMask& mask, Result& result, const std::vector<double>& limit_mask,
                   const Surface_analysis_options& options)
 {
-  using Traits = Analysis_host_traits<typename DoubleMask::Host>;
+  using Traits = Host_of<DoubleMask>;
   const int rings = result.rings + 2;
   const Patch shape = analysis_patch(mask, result.valence, result.boundary, rings);
   Patch patch = shape;
@@ -607,7 +607,7 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
   // the real host on the whole patch, as long as it fits
   Analysis_mesh mesh = patch.mesh;
   Analysis_halfedge start = patch.start;
-  const double growth = Traits::steps == 2 ? 9 : 4;
+  const double growth = Traits::analysis_steps == 2 ? 9 : 4;
   int level = 0;
   while(level < 3 || static_cast<double>(mesh.number_of_faces()) * growth <= static_cast<double>(options.max_faces)) {
     auto step = analysed_step(mesh, start, mask);
@@ -735,7 +735,7 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
 {
   using Mask = MaskTemplate<Analysis_mesh, FT>;
   using Double_mask = MaskTemplate<Analysis_mesh, double>;
-  using Traits = Analysis_host_traits<typename Mask::Host>;
+  using Traits = Host_of<Mask>;
   const Mask mask(args...);
   const Double_mask double_mask(args...);
   Surface_analysis<FT> result;

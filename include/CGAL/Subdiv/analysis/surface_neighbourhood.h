@@ -9,10 +9,7 @@
 /// and mask, and the local subdivision matrix read from the recorded stencils.
 
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/hosts/Dual_split.h>
-#include <CGAL/Subdiv/hosts/Quad_split.h>
-#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
@@ -45,66 +42,6 @@ namespace Subdiv {
  * stencils, whose weights have the mask's own number type.
  */
 using Analysis_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
-
-/*!
- * \ingroup PkgSubdivAnalysis
- * What the analysis needs to know about a refinement host: the face size of
- * its regular meshes, whether the neighbourhood is centred at a vertex
- * (primal schemes) or at a face (dual schemes), how many host steps make one
- * analysed step, and by how much the ring count grows per analysed step.
- *
- * - `Triangle_quadrisection`: triangles, vertex centre, 1 step, rings x 2;
- * - `Quad_split`: quads, vertex centre, 1 step, rings x 2;
- * - `Dual_split`: quads, face centre, 1 step, rings x 2;
- * - `Sqrt3_split`: triangles, vertex centre, 2 steps (one sqrt3 step rotates
- *   the neighbourhood by half a sector; two steps are the 1-to-9 split, which
- *   maps every ring onto itself), rings x 3. The matrix, its eigenvalues and
- *   the characteristic map are those of the double step
- *   \f$ S = S_2 S_1 \f$: the eigenvalues are the squares of the moduli of the
- *   single-step ones. At a border vertex the border is refined on every
- *   second step only: the double step is a resting step (the patch, built
- *   fresh, rests first, as a mesh read from a file) then a refining step;
- *   over the pair the border is split 1-to-3 and the neighbourhood is
- *   invariant.
- */
-template <class Host>
-struct Analysis_host_traits;
-
-template <class Mesh>
-struct Analysis_host_traits<Triangle_quadrisection<Mesh>>
-{
-  static constexpr int face_size = 3;
-  static constexpr bool face_centred = false;
-  static constexpr int steps = 1;
-  static constexpr int ring_growth = 2;
-};
-
-template <class Mesh>
-struct Analysis_host_traits<Quad_split<Mesh>>
-{
-  static constexpr int face_size = 4;
-  static constexpr bool face_centred = false;
-  static constexpr int steps = 1;
-  static constexpr int ring_growth = 2;
-};
-
-template <class Mesh>
-struct Analysis_host_traits<Dual_split<Mesh>>
-{
-  static constexpr int face_size = 4;
-  static constexpr bool face_centred = true;
-  static constexpr int steps = 1;
-  static constexpr int ring_growth = 2;
-};
-
-template <class Mesh>
-struct Analysis_host_traits<Sqrt3_split<Mesh>>
-{
-  static constexpr int face_size = 3;
-  static constexpr bool face_centred = false;
-  static constexpr int steps = 2;
-  static constexpr int ring_growth = 3;
-};
 
 namespace internal {
 
@@ -357,7 +294,7 @@ Analysis_mesh refine_recording(const Analysis_mesh& mesh, const Mask& mask,
                                std::vector<Vertex_stencil<typename Mask::Number_type>>& stencils)
 {
   using FT = typename Mask::Number_type;
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   const Host host(mesh);
   stencils.assign(host.number_of_new_vertices(), Vertex_stencil<FT>());
   host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) { report(stencils[j]); });
@@ -382,7 +319,7 @@ Analysis_mesh refine_recording(const Analysis_mesh& mesh, const Mask& mask,
 }
 
 /*
- * One analysed step (`Analysis_host_traits::steps` host steps), with the
+ * One analysed step (the host's `analysis_steps` host steps), with the
  * stencils composed over the steps, and where the centre went: the new
  * `start` halfedge, found from the stencils alone:
  * - vertex centre: the new centre is the new vertex whose stencil has the
@@ -408,7 +345,7 @@ template <class Mask>
 Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge start, const Mask& mask)
 {
   using FT = typename Mask::Number_type;
-  using Traits = Analysis_host_traits<typename Mask::Host>;
+  using Traits = Host_of<Mask>;
   Analysed_step<Mask> result;
   // the centre and the start neighbour, followed through the host steps
   std::vector<Analysis_vertex> central; // face centre: corners, from the start corner
@@ -423,7 +360,7 @@ Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge s
   }
   Analysis_mesh current = mesh;
   std::vector<Vertex_stencil<FT>> composed;
-  for(int step = 0; step < Traits::steps; ++step) {
+  for(int step = 0; step < Traits::analysis_steps; ++step) {
     std::vector<Vertex_stencil<FT>> stencils;
     Analysis_mesh next = refine_recording(current, mask, stencils);
     if(step == 0) {
@@ -438,7 +375,7 @@ Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge s
     }
     // where the centre went, in `next`
     if(!Traits::face_centred) {
-      const typename Mask::Host host(current);
+      const Host_of<Mask> host(current);
       Analysis_vertex new_centre;
       bool found = false;
       for(std::size_t j = 0; j < stencils.size() && !found; ++j) {
@@ -584,10 +521,10 @@ inline std::pair<std::vector<int>, std::set<std::vector<int>>> connectivity(cons
 template <class Mask>
 Patch border_face_patch(const Mask& mask, int k, int rings)
 {
-  using Traits = Analysis_host_traits<typename Mask::Host>;
+  using Traits = Host_of<Mask>;
   require(k >= 1, "a border vertex needs one face or more, got " + std::to_string(k));
   require(rings >= 1, "a patch needs one ring or more");
-  const Patch coarse = build_patch(Traits::face_size, false, k, true, 2);
+  const Patch coarse = build_patch(Traits::regular_face_size, false, k, true, 2);
   const Analysis_vertex centre = coarse.mesh.source(coarse.start);
   // level 1: the new vertices are the face corners, numbered face by face
   // from halfedge(f) (`Dual_split`); the corners at the centre make the central face
@@ -641,10 +578,10 @@ Patch border_face_patch(const Mask& mask, int k, int rings)
 template <class Mask>
 Patch analysis_patch(const Mask& mask, int n, bool border, int rings)
 {
-  using Traits = Analysis_host_traits<typename Mask::Host>;
+  using Traits = Host_of<Mask>;
   if(Traits::face_centred && border)
     return border_face_patch(mask, n, rings);
-  return build_patch(Traits::face_size, Traits::face_centred, n, border, rings);
+  return build_patch(Traits::regular_face_size, Traits::face_centred, n, border, rings);
 }
 
 } // namespace internal
@@ -676,7 +613,7 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
                                                                            int rings)
 {
   using FT = typename Mask::Number_type;
-  using Traits = Analysis_host_traits<typename Mask::Host>;
+  using Traits = Host_of<Mask>;
   const Patch patch = analysis_patch(mask, valence, border, rings + 2);
   const Labelling old_labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, rings);
   const Analysed_step<Mask> step = analysed_step(patch.mesh, patch.start, mask);

@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -51,7 +52,7 @@ namespace Subdiv {
  * valence at least 3, V_2 interior vertices of valence 2 and K border vertices
  * with at least 3 faces; the Euler characteristic is kept.
  *
- * Mask used: `corner_node(mesh, h, acc)`.
+ * Mask used: `corner_node(Corner_view, acc)`.
  */
 template <class Mesh>
 class Dual_split
@@ -62,6 +63,12 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   static constexpr int required_face_size = 0;
+  /// for the analysis: the faces of the regular meshes, a neighbourhood
+  /// centred at a face, one host step per analysed step, rings doubled
+  static constexpr int regular_face_size = 4;
+  static constexpr bool face_centred = true;
+  static constexpr int analysis_steps = 1;
+  static constexpr int ring_growth = 2;
   /// F' = F + E + V: four times F on a quad mesh, which every mesh becomes
   /// after one level, up to its extraordinary faces
   static double face_growth() { return 4; }
@@ -113,7 +120,7 @@ public:
   {
     internal::for_each_element(m_number, CGAL::faces(m_mesh), num_faces(m_mesh), loop, [&](face_descriptor f) {
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        visit(corner(h), [&](auto& acc) { mask.corner_node(m_mesh, h, acc); });
+        visit(corner(h), [&](auto& acc) { mask.corner_node(Corner_view<Mesh>(m_mesh, h), acc); });
     });
   }
 

@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -33,8 +34,8 @@ namespace Subdiv {
  * Counts: V' = V + E + F, E' = 2E + C, F' = C, where C is the number of face
  * corners (the sum of the face sizes), so the Euler characteristic is kept.
  *
- * Masks used: `vertex_node(mesh, v, acc)`, `edge_node(mesh, h, acc)` and
- * `face_node(mesh, f, acc)`.
+ * Masks used: `vertex_node(Vertex_view, acc)`, `edge_node(Edge_view, acc)`
+ * (the view of `halfedge(e)`) and `face_node(Face_view, acc)`.
  */
 template <class Mesh>
 class Quad_split
@@ -45,6 +46,12 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   static constexpr int required_face_size = 0;
+  /// for the analysis: the faces of the regular meshes, a neighbourhood
+  /// centred at a vertex, one host step per analysed step, rings doubled
+  static constexpr int regular_face_size = 4;
+  static constexpr bool face_centred = false;
+  static constexpr int analysis_steps = 1;
+  static constexpr int ring_growth = 2;
   /// every face becomes as many quads as it has corners: 4 once all faces are quads
   static double face_growth() { return 4; }
   /// the counts after one level
@@ -86,18 +93,19 @@ public:
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
+    const Border_corners corners = internal::border_corners_of(mask);
     internal::for_each_element_of(
       m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); }); });
+      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(Vertex_view<Mesh>(m_mesh, v, corners), acc); }); });
     internal::for_each_element_of(
       m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
       [&](auto e) {
-        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(Edge_view<Mesh>(m_mesh, halfedge(e, m_mesh), corners), acc); });
       });
     internal::for_each_element_of(
       m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
       [&](face_descriptor f) {
-        visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+        visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f, corners), acc); });
       });
   }
 

@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -128,11 +129,10 @@ bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
  * halfedge the kept border triangle (resting step) or the middle triangle
  * (p1, p2, c) (refining step).
  *
- * Masks used: `vertex_node(mesh, v, acc)` (interior vertices),
- * `face_node(mesh, f, acc)`, `resting_border_vertex_node(mesh, v, acc)`,
- * `border_vertex_node(mesh, h, acc)` (h: the border halfedge that ends at
- * the vertex) and `border_edge_node(mesh, h, k, acc)` (h: the face halfedge
- * of the border edge, k = 1, 2).
+ * Masks used: `vertex_node(Vertex_view, acc)` (interior vertices),
+ * `face_node(Face_view, acc)`, `resting_border_vertex_node(Vertex_view, acc)`,
+ * `border_vertex_node(Vertex_view, acc)` and `border_edge_node(Edge_view, k,
+ * acc)` (the view of the face halfedge of the border edge, k = 1, 2).
  */
 template <class Mesh>
 class Sqrt3_split
@@ -144,6 +144,21 @@ public:
   using Index = internal::Face_soup::Index;
 
   static constexpr int required_face_size = 3;
+  /// for the analysis: the faces of the regular meshes, a neighbourhood
+  /// centred at a vertex, and two host steps per analysed step (one sqrt3
+  /// step rotates the neighbourhood by half a sector; two steps are the
+  /// 1-to-9 split, which maps every ring onto itself), rings tripled. The
+  /// matrix, its eigenvalues and the characteristic map are those of the
+  /// double step S = S_2 S_1: the eigenvalues are the squares of the moduli
+  /// of the single-step ones. At a border vertex the border is refined on
+  /// every second step only: the double step is a resting step (the patch,
+  /// built fresh, rests first, as a mesh read from a file) then a refining
+  /// step; over the pair the border is split 1-to-3 and the neighbourhood is
+  /// invariant.
+  static constexpr int regular_face_size = 3;
+  static constexpr bool face_centred = false;
+  static constexpr int analysis_steps = 2;
+  static constexpr int ring_growth = 3;
   static double face_growth() { return 3; }
   /// the counts after one level: not known in advance (false)
   static bool next_counts(internal::Mesh_counts&) { return false; }
@@ -160,12 +175,10 @@ public:
       return;
     m_refine_border = internal::sqrt3_border_is_pending(mesh, m_number);
     m_slot.assign(halfedge_count, 0);
-    m_border_in.assign(m_vertex_count, boost::graph_traits<Mesh>::null_halfedge());
     Index face_slot = 0, border_slot = static_cast<Index>(3 * m_face_count);
     for(halfedge_descriptor h : halfedges(mesh)) {
       if(is_border(h, mesh)) {
         m_slot[m_number(h)] = border_slot++;
-        m_border_in[m_number(target(h, mesh))] = h;
       } else {
         m_slot[m_number(h)] = face_slot++;
       }
@@ -227,21 +240,17 @@ public:
   {
     internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
       const std::size_t j = m_number(v);
-      if(m_border_edges == 0) {
-        visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
-        return;
-      }
-      const halfedge_descriptor border_in = m_border_in[j];
-      if(border_in == boost::graph_traits<Mesh>::null_halfedge())
-        visit(j, [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); });
+      const Vertex_view<Mesh> view(m_mesh, v);
+      if(!view.on_border())
+        visit(j, [&](auto& acc) { mask.vertex_node(view, acc); });
       else if(m_refine_border)
-        visit(j, [&](auto& acc) { mask.border_vertex_node(m_mesh, border_in, acc); });
+        visit(j, [&](auto& acc) { mask.border_vertex_node(view, acc); });
       else
-        visit(j, [&](auto& acc) { mask.resting_border_vertex_node(m_mesh, v, acc); });
+        visit(j, [&](auto& acc) { mask.resting_border_vertex_node(view, acc); });
     });
     internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
       if(!m_refine_border) {
-        visit(m_vertex_count + m_number(f), [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+        visit(m_vertex_count + m_number(f), [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f), acc); });
         return;
       }
       const std::size_t j = m_face_vertex[m_number(f)];
@@ -250,10 +259,11 @@ public:
         if(is_border(opposite(h, m_mesh), m_mesh))
           border_edge = h;
       if(border_edge == boost::graph_traits<Mesh>::null_halfedge()) {
-        visit(j, [&](auto& acc) { mask.face_node(m_mesh, f, acc); });
+        visit(j, [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f), acc); });
       } else {
-        visit(j, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 1, acc); });
-        visit(j + 1, [&](auto& acc) { mask.border_edge_node(m_mesh, border_edge, 2, acc); });
+        const Edge_view<Mesh> edge(m_mesh, border_edge);
+        visit(j, [&](auto& acc) { mask.border_edge_node(edge, 1, acc); });
+        visit(j + 1, [&](auto& acc) { mask.border_edge_node(edge, 2, acc); });
       }
     });
   }
@@ -369,7 +379,6 @@ private:
   std::size_t m_border_edges = 0;
   bool m_refine_border = false;
   std::vector<Index> m_slot;                    // spoke slot of each halfedge (mesh with border)
-  std::vector<halfedge_descriptor> m_border_in; // the border halfedge ending at each vertex, if any
   std::vector<Index> m_face_vertex;             // refining step: face point, or p1 of a border face
   std::vector<Index> m_face_of_point;           // refining step: the face of each face point
   std::vector<Index> m_edge_of_border_face;     // refining step: the border edge of each border face

@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cstddef>
@@ -25,7 +26,8 @@ namespace Subdiv {
  * new faces: four per old face, in face order, the corner triangles at a, b, c
  * first and the middle triangle last.
  *
- * Masks used: `vertex_node(mesh, v, acc)` and `edge_node(mesh, h, acc)`.
+ * Masks used: `vertex_node(Vertex_view, acc)` and `edge_node(Edge_view, acc)`
+ * (the view of `halfedge(e)`).
  */
 template <class Mesh>
 class Triangle_quadrisection
@@ -35,6 +37,12 @@ public:
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
   static constexpr int required_face_size = 3;
+  /// for the analysis: the faces of the regular meshes, a neighbourhood
+  /// centred at a vertex, one host step per analysed step, rings doubled
+  static constexpr int regular_face_size = 3;
+  static constexpr bool face_centred = false;
+  static constexpr int analysis_steps = 1;
+  static constexpr int ring_growth = 2;
   static double face_growth() { return 4; }
   /// the counts after one level
   static bool next_counts(internal::Mesh_counts& c)
@@ -68,13 +76,14 @@ public:
   template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
   void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
   {
+    const Border_corners corners = internal::border_corners_of(mask);
     internal::for_each_element_of(
       m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(m_mesh, v, acc); }); });
+      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(Vertex_view<Mesh>(m_mesh, v, corners), acc); }); });
     internal::for_each_element_of(
       m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
       [&](auto e) {
-        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(m_mesh, halfedge(e, m_mesh), acc); });
+        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(Edge_view<Mesh>(m_mesh, halfedge(e, m_mesh), corners), acc); });
       });
   }
 

@@ -7,7 +7,11 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <CGAL/number_utils.h>
+
 #include <boost/graph/graph_traits.hpp>
+
+#include <type_traits>
 
 namespace CGAL {
 namespace Subdiv {
@@ -21,17 +25,20 @@ using Mesh_point =
 template <class Mesh>
 using Mesh_FT = typename CGAL::Kernel_traits<Mesh_point<Mesh>>::Kernel::FT;
 
-// Around a border vertex: the border halfedge that ends at v and the one that
-// starts at v (their other ends are v's two neighbours along the border).
-template <class Mesh>
-std::pair<typename boost::graph_traits<Mesh>::halfedge_descriptor,
-          typename boost::graph_traits<Mesh>::halfedge_descriptor>
-border_halfedges_at(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& mesh)
+/// a weight (or parameter) of one number type in another: itself when the
+/// types agree, converted exactly when `To` can hold it, otherwise the
+/// nearest double
+template <class To, class From>
+To convert_weight(const From& w)
 {
-  for(auto h : CGAL::halfedges_around_target(v, mesh))
-    if(CGAL::is_border(h, mesh))
-      return {h, next(h, mesh)};
-  return {boost::graph_traits<Mesh>::null_halfedge(), boost::graph_traits<Mesh>::null_halfedge()};
+  if constexpr(std::is_same<To, From>::value)
+    return w;
+  else if constexpr(std::is_floating_point<To>::value)
+    return To(CGAL::to_double(w));
+  else if constexpr(std::is_constructible<To, From>::value)
+    return To(w);
+  else
+    return To(CGAL::to_double(w));
 }
 
 } // namespace internal

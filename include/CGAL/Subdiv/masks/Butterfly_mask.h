@@ -3,10 +3,13 @@
 #ifndef CGAL_SUBDIV_MASKS_BUTTERFLY_MASK_H
 #define CGAL_SUBDIV_MASKS_BUTTERFLY_MASK_H
 
+#include <CGAL/Subdiv/curves/Four_point_scheme.h>
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/masks/butterfly_weights.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <string>
 
@@ -33,9 +36,10 @@ namespace Subdiv {
  * mask chooses:
  * - border edge: the four-point rule with the same tension,
  *   -w, 1/2 + w, 1/2 + w, -w over the border polygon (-1/16, 9/16, 9/16,
- *   -1/16 at w = 1/16). A border edge point depends on border vertices only,
- *   so every border loop of the refined mesh is exactly one step of the
- *   four-point curve scheme (`Four_point_scheme`) applied to the old loop;
+ *   -1/16 at w = 1/16): `Four_point_scheme` through `Border_curve_rule`. A
+ *   border edge point depends on border vertices only, so every border loop
+ *   of the refined mesh is exactly one step of the four-point curve scheme
+ *   applied to the old loop;
  * - interior edge whose stencil reaches over the border (an outer vertex
  *   e_i is missing because the edge across which it lies is a border edge):
  *   the missing vertex is replaced by the reflection of the face's third
@@ -52,17 +56,25 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Butterfly_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Triangle_quadrisection<Mesh>;
+  static constexpr Split split = Split::triangle_quadrisection;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
   /// \throws Bad_input unless 0 <= w < 1/4: the range in which the four-point
   /// rule of the border converges. w = 0 is piecewise-linear interpolation
   /// (edge midpoints); w = 1/16 is the value of the paper.
-  explicit Butterfly_mask(const FT& w = FT(1) / FT(16)) : m_w(w), m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w)
+  explicit Butterfly_mask(const FT& w = FT(1) / FT(16))
+    : m_w(checked(w)), m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w), m_border(Four_point_scheme<FT>(w))
   {
-    internal::require(FT(0) <= w && w < FT(1) / FT(4), "butterfly tension w must satisfy 0 <= w < 1/4");
+  }
+
+  /// the same rules, with the same tension, for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Butterfly_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Butterfly_mask<OtherMesh, OtherFT>(internal::convert_weight<OtherFT>(m_w));
   }
 
   std::string name() const { return "butterfly"; }
@@ -70,27 +82,34 @@ public:
   const FT& w() const { return m_w; }
 
   template <class Accumulator>
-  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
-    if(CGAL::is_border_edge(h, mesh)) { // border edge: four-point rule
-      internal::four_point_border_stencil(mesh, h, m_w, acc);
+    if(e.on_border()) { // border edge: four-point rule, along the border loop
+      m_border.edge_point(e.mesh(), e.border_halfedge(), acc);
       return;
     }
     // interior edge: eight-point stencil, missing outer vertices reflected
-    internal::butterfly_stencil(mesh, h, m_half, m_wing, m_outer, acc);
+    internal::butterfly_stencil(e.mesh(), e.halfedge(), m_half, m_wing, m_outer, acc);
   }
 
 private:
+  static const FT& checked(const FT& w)
+  {
+    internal::require(FT(0) <= w && w < FT(1) / FT(4), "butterfly tension w must satisfy 0 <= w < 1/4");
+    return w;
+  }
+
   FT m_w;
   FT m_half;
   FT m_wing;
   FT m_outer;
+  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

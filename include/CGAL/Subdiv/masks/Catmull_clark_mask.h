@@ -3,9 +3,11 @@
 #ifndef CGAL_SUBDIV_MASKS_CATMULL_CLARK_MASK_H
 #define CGAL_SUBDIV_MASKS_CATMULL_CLARK_MASK_H
 
-#include <CGAL/Subdiv/hosts/Quad_split.h>
+#include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/boundary_rules.h>
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -26,8 +28,9 @@ namespace Subdiv {
  *   is the average of the face points of its n faces and R the average of
  *   the midpoints of its n edges;
  * - border edge: its midpoint; border vertex: 1/8, 6/8, 1/8 with its two
- *   border neighbours (the cubic B-spline rules: the border converges to the
- *   cubic B-spline curve of the border polygon).
+ *   border neighbours: the rules of the cubic B-spline (`Uniform_bspline_scheme`
+ *   of degree 3, through `Border_curve_rule`), so the border converges to the
+ *   cubic B-spline curve of the border polygon.
  *
  * The border rules are those of CGAL's `CatmullClark_mask_3` and of
  * OpenSubdiv with `VTX_BOUNDARY_EDGE_ONLY` (RenderMan "interpolateboundary
@@ -53,30 +56,42 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Catmull_clark_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Quad_split<Mesh>;
+  static constexpr Split split = Split::quad;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
-  explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth) : m_corners(corners) {}
+  explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth)
+    : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
+  {
+  }
+
+  /// the same rules, with the same options, for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Catmull_clark_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Catmull_clark_mask<OtherMesh, OtherFT>(m_corners);
+  }
 
   std::string name() const { return "Catmull-Clark"; }
   Border_corners border_corners() const { return m_corners; }
   bool is_interpolating() const { return false; }
 
   template <class Accumulator>
-  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  void face_node(const Face_view<Mesh>& f, Accumulator& acc) const
   {
-    add_face_point(mesh, halfedge(f, mesh), FT(1), acc);
+    add_face_point(f.mesh(), f.halfedge(), FT(1), acc);
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
-    if(CGAL::is_border_edge(h, mesh)) { // border edge: midpoint
-      acc.add(source(h, mesh), FT(1) / FT(2));
-      acc.add(target(h, mesh), FT(1) / FT(2));
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
+    if(e.on_border()) {
+      m_border.edge_point(mesh, h, acc);
       return;
     }
     const FT quarter = FT(1) / FT(4);
@@ -87,14 +102,16 @@ public:
   }
 
   template <class Accumulator>
-  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
-    const internal::Vertex_walk<Mesh> walk(v, mesh);
-    if(walk.on_border()) {
-      internal::border_vertex_rule<FT>(v, walk, m_corners, mesh, acc);
-      return;
+    switch(view.rule()) {
+      case Vertex_rule::corner: acc.add(view.vertex(), FT(1)); return;
+      case Vertex_rule::crease: m_border.vertex_point(view, acc); return;
+      case Vertex_rule::smooth: break;
     }
-    const int n = walk.valence;
+    const Mesh& mesh = view.mesh();
+    const vertex_descriptor v = view.vertex();
+    const int n = view.valence();
     // (F + 2R + (n-3) v) / n with F = (1/n) sum of face points and
     // 2R = (1/n) sum (v + u) over the neighbours u
     // v gets (n-3)/n from itself and n * 1/n^2 from its edge midpoints
@@ -133,6 +150,7 @@ private:
   }
 
   Border_corners m_corners;
+  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

@@ -3,9 +3,12 @@
 #ifndef CGAL_SUBDIV_MASKS_DOO_SABIN_MASK_H
 #define CGAL_SUBDIV_MASKS_DOO_SABIN_MASK_H
 
-#include <CGAL/Subdiv/hosts/Dual_split.h>
+#include <CGAL/Subdiv/curves/Chaikin_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/butterfly_weights.h> // internal::cos_two_pi_fraction
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/cosines.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <string>
@@ -49,35 +52,40 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Doo_sabin_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Dual_split<Mesh>;
+  static constexpr Split split = Split::dual;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Doo_sabin_mask() : m_border(Chaikin_scheme<FT>()) {}
+
+  /// the same rules for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Doo_sabin_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Doo_sabin_mask<OtherMesh, OtherFT>();
+  }
 
   std::string name() const { return "Doo-Sabin"; }
   bool is_interpolating() const { return false; }
 
   /// the new vertex of the corner of face(h) at target(h)
   template <class Accumulator>
-  void corner_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void corner_node(const Corner_view<Mesh>& corner, Accumulator& acc) const
   {
+    const Mesh& mesh = corner.mesh();
+    const halfedge_descriptor h = corner.halfedge();
     const halfedge_descriptor n = next(h, mesh);
-    const bool border_before = CGAL::is_border(opposite(h, mesh), mesh);
-    const bool border_after = CGAL::is_border(opposite(n, mesh), mesh);
-    if(border_before && border_after) { // a corner with a single face: kept
+    if(corner.border_before() && corner.border_after()) { // a corner with a single face: kept
       acc.add(target(h, mesh), FT(1));
       return;
     }
-    if(border_before || border_after) { // Chaikin on the border edge
-      acc.add(target(h, mesh), FT(3) / FT(4));
-      acc.add(border_before ? source(h, mesh) : target(n, mesh), FT(1) / FT(4));
+    if(corner.border_before() || corner.border_after()) { // Chaikin on the border edge, from the corner
+      m_border.dual_point(mesh, corner.border_before() ? opposite(h, mesh) : n, acc);
       return;
     }
-    int size = 0;
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, mesh)) {
-      (void)g;
-      ++size;
-    }
+    const int size = corner.face_size();
     const FT denominator = FT(4 * size);
     FT others(0);
     int k = 1;
@@ -88,6 +96,9 @@ public:
     }
     acc.add(target(h, mesh), FT(1) - others);
   }
+
+private:
+  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

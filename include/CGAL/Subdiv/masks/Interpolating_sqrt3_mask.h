@@ -3,8 +3,10 @@
 #ifndef CGAL_SUBDIV_MASKS_INTERPOLATING_SQRT3_MASK_H
 #define CGAL_SUBDIV_MASKS_INTERPOLATING_SQRT3_MASK_H
 
-#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
+#include <CGAL/number_type_config.h> // CGAL_PI
 
 #include <cmath>
 #include <string>
@@ -73,11 +75,19 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Interpolating_sqrt3_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Sqrt3_split<Mesh>;
+  static constexpr Split split = Split::sqrt3;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  /// the same rules for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Interpolating_sqrt3_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Interpolating_sqrt3_mask<OtherMesh, OtherFT>();
+  }
 
   std::string name() const { return "interpolating sqrt3 (Labsik-Greiner)"; }
   bool is_interpolating() const { return true; }
@@ -90,8 +100,7 @@ public:
       const int numerator[6] = {5, -1, -1, -1, -1, 5};
       return FT(numerator[j]) / FT(18);
     }
-    const double pi = 3.14159265358979323846;
-    const double theta = 2 * pi * (j + 0.5) / n;
+    const double theta = 2 * CGAL_PI * (j + 0.5) / n;
     double w = 1.0 / 3 + 2 / std::sqrt(3.0) * std::cos(theta);
     if(n != 3)
       w += 2.0 / 3 * std::cos(2 * theta);
@@ -101,28 +110,29 @@ public:
   static bool is_exact(int n) { return n == 6; }
 
   template <class Accumulator>
-  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void resting_border_vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void resting_border_vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void border_vertex_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void border_vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(target(h, mesh), FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  void face_node(const Face_view<Mesh>& f, Accumulator& acc) const
   {
+    const Mesh& mesh = f.mesh();
     halfedge_descriptor h[3];
-    h[0] = halfedge(f, mesh);
+    h[0] = f.halfedge();
     h[1] = next(h[0], mesh);
     h[2] = next(h[1], mesh);
     int valence[3];
@@ -130,12 +140,9 @@ public:
     bool all_regular = true;
     int irregular = 0;
     for(int k = 0; k < 3; ++k) {
-      valence[k] = 0;
-      border[k] = false;
-      for(halfedge_descriptor g : CGAL::halfedges_around_target(target(h[k], mesh), mesh)) {
-        ++valence[k];
-        border[k] = border[k] || is_border(g, mesh);
-      }
+      const Vertex_view<Mesh> corner = f.corner(h[k]);
+      valence[k] = corner.valence();
+      border[k] = corner.on_border();
       all_regular = all_regular && !border[k] && valence[k] == 6;
       irregular += !border[k] && valence[k] != 6;
     }
@@ -165,8 +172,10 @@ public:
   /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge `h`
   /// of a border edge, on a refining step
   template <class Accumulator>
-  void border_edge_node(const Mesh& mesh, halfedge_descriptor h, int k, Accumulator& acc) const
+  void border_edge_node(const Edge_view<Mesh>& e, int k, Accumulator& acc) const
   {
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
     const halfedge_descriptor b = opposite(h, mesh); // border halfedge, from s to t
     vertex_descriptor t = source(h, mesh), s = target(h, mesh);
     vertex_descriptor beyond_t = target(next(b, mesh), mesh), beyond_s = source(prev(b, mesh), mesh);

@@ -3,8 +3,9 @@
 #ifndef CGAL_SUBDIV_MASKS_LINEAR_QUAD_MASK_H
 #define CGAL_SUBDIV_MASKS_LINEAR_QUAD_MASK_H
 
-#include <CGAL/Subdiv/hosts/Quad_split.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <string>
@@ -28,31 +29,43 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Linear_quad_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Quad_split<Mesh>;
+  static constexpr Split split = Split::quad;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  /// the same rules for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Linear_quad_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Linear_quad_mask<OtherMesh, OtherFT>();
+  }
 
   std::string name() const { return "linear (quad split)"; }
   bool is_interpolating() const { return true; }
 
   template <class Accumulator>
-  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
     acc.add(source(h, mesh), FT(1) / FT(2));
     acc.add(target(h, mesh), FT(1) / FT(2));
   }
 
   template <class Accumulator>
-  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  void face_node(const Face_view<Mesh>& view, Accumulator& acc) const
   {
+    const Mesh& mesh = view.mesh();
+    const face_descriptor f = view.face();
     int size = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
       (void)h;

@@ -3,8 +3,9 @@
 #ifndef CGAL_SUBDIV_MASKS_LINEAR_TRIANGLE_MASK_H
 #define CGAL_SUBDIV_MASKS_LINEAR_TRIANGLE_MASK_H
 
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <string>
 
@@ -26,25 +27,35 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Linear_triangle_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Triangle_quadrisection<Mesh>;
+  static constexpr Split split = Split::triangle_quadrisection;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
   Linear_triangle_mask() : m_half(FT(1) / FT(2)) {}
 
+  /// the same rules for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Linear_triangle_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Linear_triangle_mask<OtherMesh, OtherFT>();
+  }
+
   std::string name() const { return "linear triangle"; }
   bool is_interpolating() const { return true; }
 
   template <class Accumulator>
-  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
     acc.add(source(h, mesh), m_half);
     acc.add(target(h, mesh), m_half);
   }

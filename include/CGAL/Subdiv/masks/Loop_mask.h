@@ -3,10 +3,12 @@
 #ifndef CGAL_SUBDIV_MASKS_LOOP_MASK_H
 #define CGAL_SUBDIV_MASKS_LOOP_MASK_H
 
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
+#include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/boundary_rules.h>
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/masks/loop_weights.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <string>
 
@@ -20,10 +22,12 @@ namespace Subdiv {
  * - interior edge: 3/8 for its two ends, 1/8 for the two opposite vertices;
  * - interior vertex of valence n: \f$ (1 - n\beta_n) v + \beta_n \sum_i v_i \f$,
  *   with \f$\beta_n\f$ from `Beta` (`Loop_beta` by default, `Warren_beta`);
- * - border edge: its midpoint; border vertex: 1/8, 6/8, 1/8 with its two
- *   border neighbours (the cubic B-spline rules, so the border is a cubic
- *   B-spline curve of the border polygon); a border vertex with a single
- *   face keeps that rule or, with `Border_corners::sharp`, stays in place.
+ * - border: the rules of the cubic B-spline (`Uniform_bspline_scheme` of
+ *   degree 3, through `Border_curve_rule`) along the border polygon, so the
+ *   border is a cubic B-spline curve of the border polygon: border edge, its
+ *   midpoint; border vertex, 1/8, 6/8, 1/8 with its two border neighbours; a
+ *   border vertex with a single face keeps that rule or, with
+ *   `Border_corners::sharp`, stays in place.
  *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
@@ -34,38 +38,49 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>, class Beta = Loop_beta
 class Loop_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Triangle_quadrisection<Mesh>;
+  static constexpr Split split = Split::triangle_quadrisection;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  explicit Loop_mask(Border_corners corners = Border_corners::smooth)
+    : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
+  {
+  }
 
-  explicit Loop_mask(Border_corners corners = Border_corners::smooth) : m_corners(corners) {}
+  /// the same rules, with the same options, for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Loop_mask<OtherMesh, OtherFT, Beta> rebind() const
+  {
+    return Loop_mask<OtherMesh, OtherFT, Beta>(m_corners);
+  }
 
   std::string name() const { return "Loop (" + Beta::name() + " beta)"; }
   Border_corners border_corners() const { return m_corners; }
   bool is_interpolating() const { return false; }
 
   template <class Accumulator>
-  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    const internal::Vertex_walk<Mesh> walk(v, mesh);
-    if(walk.on_border()) {
-      internal::border_vertex_rule<FT>(v, walk, m_corners, mesh, acc);
-      return;
+    switch(v.rule()) {
+      case Vertex_rule::corner: acc.add(v.vertex(), FT(1)); return;
+      case Vertex_rule::crease: m_border.vertex_point(v, acc); return;
+      case Vertex_rule::smooth: break;
     }
-    const int n = walk.valence;
+    const int n = v.valence();
     const FT beta = Beta::template beta<FT>(n);
-    acc.add(v, FT(1) - FT(n) * beta);
-    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
+    acc.add(v.vertex(), FT(1) - FT(n) * beta);
+    for(vertex_descriptor u : CGAL::vertices_around_target(v.vertex(), v.mesh()))
       acc.add(u, beta);
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
-    if(CGAL::is_border_edge(h, mesh)) { // border edge
-      acc.add(source(h, mesh), FT(1) / FT(2));
-      acc.add(target(h, mesh), FT(1) / FT(2));
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
+    if(e.on_border()) {
+      m_border.edge_point(mesh, h, acc);
       return;
     }
     acc.add(source(h, mesh), FT(3) / FT(8));
@@ -76,6 +91,7 @@ public:
 
 private:
   Border_corners m_corners;
+  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

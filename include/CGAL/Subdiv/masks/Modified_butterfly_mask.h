@@ -3,10 +3,13 @@
 #ifndef CGAL_SUBDIV_MASKS_MODIFIED_BUTTERFLY_MASK_H
 #define CGAL_SUBDIV_MASKS_MODIFIED_BUTTERFLY_MASK_H
 
+#include <CGAL/Subdiv/curves/Four_point_scheme.h>
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/masks/butterfly_weights.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <string>
 #include <vector>
@@ -36,7 +39,8 @@ namespace Subdiv {
  * vertices; Zorin's thesis adds special boundary stencils, which this mask
  * does not reproduce. It chooses, and documents:
  * - border edge: the four-point rule -1/16, 9/16, 9/16, -1/16 over the
- *   border polygon, so a border loop refines as the four-point curve scheme;
+ *   border polygon (`Four_point_scheme`, through `Border_curve_rule`), so a
+ *   border loop refines as the four-point curve scheme;
  * - interior edge with one end on the border and the other (interior) end
  *   of valence k != 6: the stencil around the interior end, which needs only
  *   that end's ring (complete, since the end is interior);
@@ -62,8 +66,9 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Modified_butterfly_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Triangle_quadrisection<Mesh>;
+  static constexpr Split split = Split::triangle_quadrisection;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using Weights = Modified_butterfly_weights<FT>;
@@ -75,7 +80,7 @@ public:
   explicit Modified_butterfly_mask(const FT& w = FT(0))
     : m_w(w), m_half(FT(1) / FT(2)), m_end(FT(1) / FT(2) - w), m_wing(FT(1) / FT(8) + FT(2) * w),
       m_outer(FT(-1) / FT(16) - w), m_plain_wing(FT(1) / FT(8)), m_plain_outer(FT(-1) / FT(16)),
-      m_border_w(FT(1) / FT(16))
+      m_border(Four_point_scheme<FT>(FT(1) / FT(16)))
   {
     internal::require(FT(-1) / FT(16) <= w && w <= FT(1) / FT(16),
                       "modified butterfly parameter w must satisfy -1/16 <= w <= 1/16");
@@ -83,6 +88,13 @@ public:
       m_cache.emplace_back(k >= 3 ? k : 0);
       m_half_cache.push_back(halved(m_cache.back()));
     }
+  }
+
+  /// the same rules, with the same parameter, for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Modified_butterfly_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Modified_butterfly_mask<OtherMesh, OtherFT>(internal::convert_weight<OtherFT>(m_w));
   }
 
   std::string name() const { return "modified butterfly"; }
@@ -93,40 +105,42 @@ public:
   static Weights weights(int k) { return Weights(k); }
 
   template <class Accumulator>
-  void vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(v.vertex(), FT(1));
   }
 
   template <class Accumulator>
-  void edge_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
-    if(CGAL::is_border_edge(h, mesh)) { // border edge: four-point rule
-      internal::four_point_border_stencil(mesh, h, m_border_w, acc);
+    const Mesh& mesh = e.mesh();
+    if(e.on_border()) { // border edge: four-point rule, along the border loop
+      m_border.edge_point(mesh, e.border_halfedge(), acc);
       return;
     }
+    const halfedge_descriptor h = e.halfedge();
     const halfedge_descriptor g = opposite(h, mesh);
-    const End a = end_of(mesh, h), b = end_of(mesh, g);
-    const bool a_usable = a.interior && a.valence >= 3, b_usable = b.interior && b.valence >= 3;
+    const Vertex_view<Mesh> a = e.end(0), b = e.end(1);
+    const bool a_usable = !a.on_border() && a.valence() >= 3, b_usable = !b.on_border() && b.valence() >= 3;
     if(a_usable && b_usable) {
-      if(a.valence == 6 && b.valence == 6) { // regular: ten-point stencil
+      if(a.valence() == 6 && b.valence() == 6) { // regular: ten-point stencil
         internal::butterfly_stencil(mesh, h, m_end, m_wing, m_outer, acc);
         if(m_w != FT(0)) {
           acc.add(target(rotate(mesh, h, 3), mesh), m_w);
           acc.add(target(rotate(mesh, g, 3), mesh), m_w);
         }
-      } else if(a.valence != 6 && b.valence != 6) { // two extraordinary ends: average
-        ring_stencil(mesh, h, a.valence, true, acc);
-        ring_stencil(mesh, g, b.valence, true, acc);
-      } else if(a.valence != 6) { // one extraordinary end
-        ring_stencil(mesh, h, a.valence, false, acc);
+      } else if(a.valence() != 6 && b.valence() != 6) { // two extraordinary ends: average
+        ring_stencil(mesh, h, a.valence(), true, acc);
+        ring_stencil(mesh, g, b.valence(), true, acc);
+      } else if(a.valence() != 6) { // one extraordinary end
+        ring_stencil(mesh, h, a.valence(), false, acc);
       } else {
-        ring_stencil(mesh, g, b.valence, false, acc);
+        ring_stencil(mesh, g, b.valence(), false, acc);
       }
-    } else if(a_usable && a.valence != 6) { // b on the border: the stencil around a
-      ring_stencil(mesh, h, a.valence, false, acc);
-    } else if(b_usable && b.valence != 6) {
-      ring_stencil(mesh, g, b.valence, false, acc);
+    } else if(a_usable && a.valence() != 6) { // b on the border: the stencil around a
+      ring_stencil(mesh, h, a.valence(), false, acc);
+    } else if(b_usable && b.valence() != 6) {
+      ring_stencil(mesh, g, b.valence(), false, acc);
     } else { // a regular end next to the border, or both on it: eight-point butterfly, reflected
       internal::butterfly_stencil(mesh, h, m_half, m_plain_wing, m_plain_outer, acc);
     }
@@ -135,31 +149,12 @@ public:
 private:
   static constexpr int max_cached_valence = 32;
 
-  struct End
-  {
-    int valence;
-    bool interior;
-  };
-
   // the next halfedge leaving source(x), `steps` times
   static halfedge_descriptor rotate(const Mesh& mesh, halfedge_descriptor x, int steps)
   {
     for(int i = 0; i < steps; ++i)
       x = opposite(prev(x, mesh), mesh);
     return x;
-  }
-
-  static End end_of(const Mesh& mesh, halfedge_descriptor h)
-  {
-    End end{0, true};
-    halfedge_descriptor x = h;
-    do {
-      ++end.valence;
-      if(CGAL::is_border(x, mesh))
-        end.interior = false;
-      x = opposite(prev(x, mesh), mesh);
-    } while(x != h);
-    return end;
   }
 
   static Weights halved(const Weights& weights)
@@ -201,7 +196,7 @@ private:
   FT m_outer;
   FT m_plain_wing;
   FT m_plain_outer;
-  FT m_border_w;
+  Border_curve_rule<FT> m_border;
   std::vector<Weights> m_cache;      // by valence, 0..max_cached_valence
   std::vector<Weights> m_half_cache; // the same, halved
 };

@@ -3,9 +3,10 @@
 #ifndef CGAL_SUBDIV_MASKS_SQRT3_MASK_H
 #define CGAL_SUBDIV_MASKS_SQRT3_MASK_H
 
-#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/loop_weights.h>
+#include <CGAL/Subdiv/masks/cosines.h>
+#include <CGAL/Subdiv/views/Split.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <string>
 
@@ -41,11 +42,19 @@ template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Sqrt3_mask
 {
 public:
+  using Polygon_mesh = Mesh;
   using Number_type = FT;
-  using Host = Sqrt3_split<Mesh>;
+  static constexpr Split split = Split::sqrt3;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  /// the same rules for another mesh type and number type
+  template <class OtherMesh, class OtherFT>
+  Sqrt3_mask<OtherMesh, OtherFT> rebind() const
+  {
+    return Sqrt3_mask<OtherMesh, OtherFT>();
+  }
 
   std::string name() const { return "sqrt3 (Kobbelt)"; }
   bool is_interpolating() const { return false; }
@@ -60,46 +69,51 @@ public:
     return exact;
   }
 
+  /// interior vertex
   template <class Accumulator>
-  void vertex_node(const Mesh& mesh, vertex_descriptor v, Accumulator& acc) const
+  void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
-    const int n = static_cast<int>(degree(v, mesh));
+    const int n = view.valence();
     const FT a = alpha(n);
     const FT each = a / FT(n);
-    acc.add(v, FT(1) - a);
-    for(vertex_descriptor u : CGAL::vertices_around_target(v, mesh))
+    acc.add(view.vertex(), FT(1) - a);
+    for(vertex_descriptor u : CGAL::vertices_around_target(view.vertex(), view.mesh()))
       acc.add(u, each);
   }
 
   template <class Accumulator>
-  void face_node(const Mesh& mesh, face_descriptor f, Accumulator& acc) const
+  void face_node(const Face_view<Mesh>& f, Accumulator& acc) const
   {
     const FT third = FT(1) / FT(3);
-    for(vertex_descriptor u : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+    for(vertex_descriptor u : CGAL::vertices_around_face(f.halfedge(), f.mesh()))
       acc.add(u, third);
   }
 
   /// border vertex on a step that leaves the border alone: kept
   template <class Accumulator>
-  void resting_border_vertex_node(const Mesh&, vertex_descriptor v, Accumulator& acc) const
+  void resting_border_vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
-    acc.add(v, FT(1));
+    acc.add(view.vertex(), FT(1));
   }
 
-  /// border vertex on a refining step; `h` is the border halfedge ending at it
+  /// border vertex on a refining step
   template <class Accumulator>
-  void border_vertex_node(const Mesh& mesh, halfedge_descriptor h, Accumulator& acc) const
+  void border_vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
+    const Mesh& mesh = view.mesh();
+    const halfedge_descriptor h = view.border_in();
     acc.add(source(h, mesh), FT(4) / FT(27));
     acc.add(target(h, mesh), FT(19) / FT(27));
     acc.add(target(next(h, mesh), mesh), FT(4) / FT(27));
   }
 
-  /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge `h`
-  /// of a border edge, on a refining step
+  /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge
+  /// `e.halfedge()` of a border edge, on a refining step
   template <class Accumulator>
-  void border_edge_node(const Mesh& mesh, halfedge_descriptor h, int k, Accumulator& acc) const
+  void border_edge_node(const Edge_view<Mesh>& e, int k, Accumulator& acc) const
   {
+    const Mesh& mesh = e.mesh();
+    const halfedge_descriptor h = e.halfedge();
     const halfedge_descriptor b = opposite(h, mesh); // border halfedge, from s to t
     vertex_descriptor t = source(h, mesh), s = target(h, mesh);
     vertex_descriptor beyond_t = target(next(b, mesh), mesh);

@@ -3,7 +3,7 @@
 #ifndef CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
 #define CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
 
-#include <CGAL/Subdiv/masks/loop_weights.h>
+#include <CGAL/Subdiv/masks/cosines.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
@@ -65,44 +65,6 @@ void butterfly_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::hal
     add_outer_vertex(mesh, next(g, mesh), outer, acc);
     add_outer_vertex(mesh, prev(g, mesh), outer, acc);
   }
-}
-
-// The four-point rule with tension w along the border edge of h:
-// -w, 1/2 + w, 1/2 + w, -w over the border polygon.
-template <class Mesh, class FT, class Accumulator>
-void four_point_border_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h, const FT& w,
-                               Accumulator& acc)
-{
-  const auto border = CGAL::is_border(h, mesh) ? h : opposite(h, mesh);
-  const FT inner = FT(1) / FT(2) + w;
-  const FT outer = -w;
-  acc.add(source(prev(border, mesh), mesh), outer);
-  acc.add(source(border, mesh), inner);
-  acc.add(target(border, mesh), inner);
-  acc.add(target(next(border, mesh), mesh), outer);
-}
-
-// cos(2 pi m / n), n > 0. With d = n / gcd(m, n), the value is rational
-// exactly when d is 1, 2, 3, 4 or 6 (then m / gcd is +-1 modulo d and the
-// value is cos(2 pi / d)); otherwise it is the double nearest to it, computed
-// in long double. m is first reduced to 0 <= m <= n / 2, so that
-// cos(2 pi m / n) and cos(2 pi (n - m) / n) are the same number.
-template <class FT>
-FT cos_two_pi_fraction(int m, int n, bool* exact = nullptr)
-{
-  m %= n;
-  if(m < 0)
-    m += n;
-  if(2 * m > n)
-    m = n - m;
-  const int d = n / std::gcd(m, n); // gcd(0, n) = n
-  const bool rational = d == 1 || d == 2 || d == 3 || d == 4 || d == 6;
-  if(exact)
-    *exact = rational;
-  if(rational)
-    return cos_two_pi_over<FT>(d);
-  const long double pi = 3.141592653589793238462643383279502884L;
-  return FT(static_cast<double>(std::cos(2 * pi * static_cast<long double>(m) / static_cast<long double>(n))));
 }
 
 } // namespace internal

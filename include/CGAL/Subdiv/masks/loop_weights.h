@@ -3,48 +3,12 @@
 #ifndef CGAL_SUBDIV_MASKS_LOOP_WEIGHTS_H
 #define CGAL_SUBDIV_MASKS_LOOP_WEIGHTS_H
 
-#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/masks/cosines.h>
 
-#include <cmath>
 #include <string>
 
 namespace CGAL {
 namespace Subdiv {
-namespace internal {
-
-// cos(2 pi / n): rational (and so exact in any FT) for n = 1, 2, 3, 4, 6;
-// otherwise the double nearest to it, converted to FT.
-template <class FT>
-FT cos_two_pi_over(int n, bool* exact = nullptr)
-{
-  bool rational = true;
-  FT value;
-  switch(n) {
-    case 1:
-      value = FT(1);
-      break;
-    case 2:
-      value = FT(-1);
-      break;
-    case 3:
-      value = FT(-1) / FT(2);
-      break;
-    case 4:
-      value = FT(0);
-      break;
-    case 6:
-      value = FT(1) / FT(2);
-      break;
-    default:
-      rational = false;
-      value = FT(std::cos(2 * 3.14159265358979323846 / n));
-  }
-  if(exact)
-    *exact = rational;
-  return value;
-}
-
-} // namespace internal
 
 /*!
  * \ingroup PkgSubdivMasks

@@ -116,7 +116,7 @@ void limit_rows(const Evaluator& evaluator, const Mesh& mesh, const std::vector<
   // descendant of vertex j is vertex j
   Mesh finer = mesh;
   const auto mask = evaluator.template mask<Mesh, double>();
-  const typename decltype(mask)::Host host(finer);
+  const Host_of<std::decay_t<decltype(mask)>> host(finer);
   const Stencil_table<double> level =
     compose_level<double>(host, mask, Mesh_numbering<Mesh>(finer), static_cast<const Stencil_table<double>*>(nullptr),
                           num_vertices(finer), Parallel_loop(1));
@@ -175,7 +175,7 @@ Limit_stencil_tables make_limit_stencil_tables(
   const NamedParameters& np = parameters::default_values())
 {
   using Mask = MaskTemplate<PolygonMesh, double>;
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   static_assert(std::is_same<Host, Triangle_quadrisection<PolygonMesh>>::value ||
                   std::is_same<Host, Quad_split<PolygonMesh>>::value,
                 "limit stencil tables: schemes of the primal triangle and quad splits");

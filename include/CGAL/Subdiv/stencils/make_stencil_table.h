@@ -506,7 +506,7 @@ template <class Mask, class Mesh, class VertexPointMap>
 Stencil_table<typename Mask::Number_type> refine_topology_once(Mesh& mesh, const Mask& mask, const VertexPointMap& vpm)
 {
   using FT = typename Mask::Number_type;
-  const typename Mask::Host host(mesh);
+  const Host_of<Mask> host(mesh);
   const Mesh_numbering<Mesh> number(mesh);
   Stencil_table<FT> table = compose_level<FT>(host, mask, number, static_cast<const Stencil_table<FT>*>(nullptr),
                                               num_vertices(mesh), Parallel_loop(1));
@@ -549,7 +549,7 @@ Stencil_table<typename Mask::Number_type> make_stencil_table(
   const NamedParameters& np = parameters::default_values())
 {
   using FT = typename Mask::Number_type;
-  using Host = typename Mask::Host;
+  using Host = Host_of<Mask>;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const auto vpm =

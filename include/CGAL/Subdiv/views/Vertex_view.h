@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_VIEWS_VERTEX_VIEW_H
+#define CGAL_SUBDIV_VIEWS_VERTEX_VIEW_H
+
+/// \file Vertex_view.h
+/// What a mask sees of the element whose new vertex it weighs: the views that
+/// the refinement hosts build once per element and hand to the masks, in the
+/// role of OpenSubdiv's Sdc neighbourhood interfaces. Every question "what
+/// kind of vertex is this" (valence, faces, border, rule) is answered here and
+/// nowhere else; crease and corner tags will enter here too.
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <type_traits>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+// halfedge(f) of any FaceGraph, for classes whose member `halfedge()` hides the free function
+template <class Mesh>
+typename boost::graph_traits<Mesh>::halfedge_descriptor first_halfedge(
+  typename boost::graph_traits<Mesh>::face_descriptor f, const Mesh& mesh)
+{
+  return halfedge(f, mesh);
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * What the approximating schemes do at a border vertex with a single incident
+ * face (a "corner", border valence 2).
+ */
+enum class Border_corners {
+  /// the border rule of every other border vertex (1/8, 6/8, 1/8): what CGAL's
+  /// Subdivision_method_3 does, and OpenSubdiv with boundary interpolation
+  /// "edges only"
+  smooth,
+  /// the vertex stays where it is, so the limit surface keeps the corner:
+  /// OpenSubdiv's boundary interpolation "edges and corners"
+  sharp
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The rule a vertex is refined with, as OpenSubdiv's `Sdc::Crease` names
+ * them: `smooth` inside the mesh, `crease` where two sharp edges meet (a
+ * border vertex: border edges are sharp), `corner` where the vertex is kept
+ * (a border vertex with a single face, with `Border_corners::sharp`).
+ */
+enum class Vertex_rule { smooth, crease, corner };
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * A vertex of a `FaceGraph` as a mask sees it: its valence (incident edges),
+ * its faces, whether it is on the border and, there, its two border halfedges
+ * (the border neighbours are their other ends), and its rule. Built by the
+ * refinement hosts with one walk around the vertex.
+ */
+template <class Mesh>
+class Vertex_view
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Vertex_view(const Mesh& mesh, vertex_descriptor v, Border_corners corners = Border_corners::smooth)
+    : m_mesh(&mesh), m_vertex(v), m_border_in(boost::graph_traits<Mesh>::null_halfedge())
+  {
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh)) {
+      ++m_valence;
+      if(CGAL::is_border(h, mesh))
+        m_border_in = h;
+    }
+    if(!on_border())
+      m_rule = Vertex_rule::smooth;
+    else if(m_valence == 2 && corners == Border_corners::sharp)
+      m_rule = Vertex_rule::corner;
+    else
+      m_rule = Vertex_rule::crease;
+  }
+
+  const Mesh& mesh() const { return *m_mesh; }
+  vertex_descriptor vertex() const { return m_vertex; }
+  /// the number of edges at the vertex (a border vertex counts its two border edges)
+  int valence() const { return m_valence; }
+  /// the number of faces at the vertex
+  int number_of_faces() const { return on_border() ? m_valence - 1 : m_valence; }
+  bool on_border() const { return m_border_in != boost::graph_traits<Mesh>::null_halfedge(); }
+  /// the border halfedge that ends at the vertex (null inside the mesh)
+  halfedge_descriptor border_in() const { return m_border_in; }
+  /// the border halfedge that starts at the vertex (null inside the mesh)
+  halfedge_descriptor border_out() const
+  {
+    return on_border() ? next(m_border_in, *m_mesh) : boost::graph_traits<Mesh>::null_halfedge();
+  }
+  Vertex_rule rule() const { return m_rule; }
+
+private:
+  const Mesh* m_mesh;
+  vertex_descriptor m_vertex;
+  halfedge_descriptor m_border_in;
+  int m_valence = 0;
+  Vertex_rule m_rule = Vertex_rule::smooth;
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * An edge as a mask sees it, through one of its halfedges (the hosts give
+ * `halfedge(e)`): whether it is on the border, and the views of its two ends
+ * (made when asked for).
+ */
+template <class Mesh>
+class Edge_view
+{
+public:
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Edge_view(const Mesh& mesh, halfedge_descriptor h, Border_corners corners = Border_corners::smooth)
+    : m_mesh(&mesh), m_halfedge(h), m_corners(corners), m_border(CGAL::is_border_edge(h, mesh))
+  {
+  }
+
+  const Mesh& mesh() const { return *m_mesh; }
+  halfedge_descriptor halfedge() const { return m_halfedge; }
+  bool on_border() const { return m_border; }
+  /// the border halfedge of a border edge
+  halfedge_descriptor border_halfedge() const
+  {
+    return CGAL::is_border(m_halfedge, *m_mesh) ? m_halfedge : opposite(m_halfedge, *m_mesh);
+  }
+  /// the view of source(halfedge()) (i = 0) or target(halfedge()) (i = 1)
+  Vertex_view<Mesh> end(int i) const
+  {
+    return Vertex_view<Mesh>(*m_mesh, i == 0 ? source(m_halfedge, *m_mesh) : target(m_halfedge, *m_mesh), m_corners);
+  }
+
+private:
+  const Mesh* m_mesh;
+  halfedge_descriptor m_halfedge;
+  Border_corners m_corners;
+  bool m_border;
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * A face as a mask sees it, through `halfedge(f)`; the views of its corners
+ * are made when asked for.
+ */
+template <class Mesh>
+class Face_view
+{
+public:
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+
+  Face_view(const Mesh& mesh, face_descriptor f, Border_corners corners = Border_corners::smooth)
+    : m_mesh(&mesh), m_face(f), m_corners(corners)
+  {
+  }
+
+  const Mesh& mesh() const { return *m_mesh; }
+  face_descriptor face() const { return m_face; }
+  halfedge_descriptor halfedge() const { return internal::first_halfedge(m_face, *m_mesh); }
+  /// the view of the corner target(h), h a halfedge of the face
+  Vertex_view<Mesh> corner(halfedge_descriptor h) const
+  {
+    return Vertex_view<Mesh>(*m_mesh, target(h, *m_mesh), m_corners);
+  }
+
+private:
+  const Mesh* m_mesh;
+  face_descriptor m_face;
+  Border_corners m_corners;
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * A face corner as a dual mask sees it: the corner of `face(h)` at
+ * `target(h)`, whether the face's edges before and after the corner are on
+ * the border, and the size of the face.
+ */
+template <class Mesh>
+class Corner_view
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Corner_view(const Mesh& mesh, halfedge_descriptor h)
+    : m_mesh(&mesh),
+      m_halfedge(h),
+      m_border_before(CGAL::is_border(opposite(h, mesh), mesh)),
+      m_border_after(CGAL::is_border(opposite(next(h, mesh), mesh), mesh))
+  {
+  }
+
+  const Mesh& mesh() const { return *m_mesh; }
+  /// the halfedge of the face that ends at the corner
+  halfedge_descriptor halfedge() const { return m_halfedge; }
+  vertex_descriptor vertex() const { return target(m_halfedge, *m_mesh); }
+  /// whether the edge of `halfedge()` is on the border
+  bool border_before() const { return m_border_before; }
+  /// whether the edge of `next(halfedge())` is on the border
+  bool border_after() const { return m_border_after; }
+  int face_size() const
+  {
+    int size = 0;
+    halfedge_descriptor g = m_halfedge;
+    do {
+      ++size;
+      g = next(g, *m_mesh);
+    } while(g != m_halfedge);
+    return size;
+  }
+
+private:
+  const Mesh* m_mesh;
+  halfedge_descriptor m_halfedge;
+  bool m_border_before;
+  bool m_border_after;
+};
+
+namespace internal {
+
+template <class Mask, class = void>
+struct Has_border_corners : std::false_type
+{
+};
+template <class Mask>
+struct Has_border_corners<Mask, std::void_t<decltype(std::declval<const Mask&>().border_corners())>>
+  : std::true_type
+{
+};
+
+/// the `Border_corners` option of a mask (smooth for masks without one)
+template <class Mask>
+Border_corners border_corners_of(const Mask& mask)
+{
+  if constexpr(Has_border_corners<Mask>::value)
+    return mask.border_corners();
+  else {
+    (void)mask;
+    return Border_corners::smooth;
+  }
+}
+
+} // namespace internal
+
+/// the view of vertex `v` with the options of `mask` (as the hosts make it)
+template <class Mask, class Mesh>
+Vertex_view<Mesh> vertex_view(const Mask& mask, const Mesh& mesh,
+                              typename boost::graph_traits<Mesh>::vertex_descriptor v)
+{
+  return Vertex_view<Mesh>(mesh, v, internal::border_corners_of(mask));
+}
+
+/// the view of the edge of `h` with the options of `mask` (as the hosts make it)
+template <class Mask, class Mesh>
+Edge_view<Mesh> edge_view(const Mask& mask, const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h)
+{
+  return Edge_view<Mesh>(mesh, h, internal::border_corners_of(mask));
+}
+
+/// the view of face `f` with the options of `mask` (as the hosts make it)
+template <class Mask, class Mesh>
+Face_view<Mesh> face_view(const Mask& mask, const Mesh& mesh, typename boost::graph_traits<Mesh>::face_descriptor f)
+{
+  return Face_view<Mesh>(mesh, f, internal::border_corners_of(mask));
+}
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_VIEWS_VERTEX_VIEW_H
