@@ -124,10 +124,10 @@ template <class F>
 void expect_same_with_any_thread_count(const Mesh& input, const F& refine, int levels)
 {
   Mesh sequential = input;
-  refine(sequential, S::threads(1, CGAL::parameters::number_of_iterations(levels)));
+  refine(sequential, S::parameters::number_of_iterations(levels).threads(1));
   for(const int threads : {2, 0}) {
     Mesh parallel = input;
-    refine(parallel, S::threads(threads, CGAL::parameters::number_of_iterations(levels)));
+    refine(parallel, S::parameters::number_of_iterations(levels).threads(threads));
     ASSERT_TRUE(CGAL::is_valid_polygon_mesh(parallel));
     EXPECT_EQ(fingerprint(parallel), fingerprint(sequential)) << threads << " threads, " << levels << " levels";
   }
@@ -189,19 +189,18 @@ TEST(Parallel, edge_splits_beside_the_resize_are_the_same_with_any_number_of_thr
   for(const bool triangles : {true, false}) {
     const Mesh input = torus(30, 20, triangles, 7);
     Mesh sequential = input;
-    const auto np = CGAL::parameters::number_of_iterations(1);
     const auto refine = [&](Mesh& m, const auto& p) {
       if(triangles)
         S::loop_subdivision(m, p);
       else
         S::catmull_clark_subdivision(m, p);
     };
-    refine(sequential, S::threads(1, np));
+    refine(sequential, S::parameters::number_of_iterations(1).threads(1));
     for(const bool reserved : {false, true}) {
       Mesh parallel = input;
       if(reserved)
         parallel.reserve(100000, 300000, 200000);
-      refine(parallel, S::threads(2, np));
+      refine(parallel, S::parameters::number_of_iterations(1).threads(2));
       ASSERT_TRUE(CGAL::is_valid_polygon_mesh(parallel));
       EXPECT_EQ(fingerprint(parallel), fingerprint(sequential)) << (reserved ? "reserved" : "not reserved");
     }
@@ -219,10 +218,10 @@ TEST(Parallel, edge_splits_wired_from_the_snapshot_equal_the_soup)
     auto label = soup.add_property_map<Mesh::Face_index, int>("f:label", 0).first;
     S::Carried_data<Mesh> data;
     data.face_map(label);
-    refine(soup, S::carried_data(data, CGAL::parameters::number_of_iterations(levels)));
+    refine(soup, S::parameters::number_of_iterations(levels).carried_data(data));
     for(const int threads : {1, 2}) {
       Mesh fast = snapshot;
-      refine(fast, S::threads(threads, CGAL::parameters::number_of_iterations(levels)));
+      refine(fast, S::parameters::number_of_iterations(levels).threads(threads));
       ASSERT_TRUE(CGAL::is_valid_polygon_mesh(fast));
       EXPECT_EQ(connectivity(fast), connectivity(soup)) << levels << " levels, " << threads << " threads";
     }
@@ -278,13 +277,17 @@ TEST(Parallel, stencil_tables_are_the_same_with_any_number_of_threads)
   };
   const Mesh triangles = torus(30, 20, true, 9), quads = torus(30, 20, false, 9);
   for(int levels = 1; levels <= 3; ++levels) {
-    same(S::make_stencil_table(triangles, S::Loop_mask<Mesh>(), levels, S::threads(1)),
-         S::make_stencil_table(triangles, S::Loop_mask<Mesh>(), levels, S::threads(2)));
-    same(S::make_stencil_table(quads, S::Catmull_clark_mask<Mesh>(), levels, S::threads(1)),
-         S::make_stencil_table(quads, S::Catmull_clark_mask<Mesh>(), levels, S::threads(0)));
+    same(
+      S::make_stencil_table(triangles, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(levels).threads(1)),
+      S::make_stencil_table(triangles, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(levels).threads(2)));
+    same(S::make_stencil_table(quads, S::Catmull_clark_mask<Mesh>(),
+                               S::parameters::number_of_iterations(levels).threads(1)),
+         S::make_stencil_table(quads, S::Catmull_clark_mask<Mesh>(),
+                               S::parameters::number_of_iterations(levels).threads(0)));
     // sqrt3 with a border: new vertices are not visited in order (two passes)
-    same(S::make_stencil_table(triangles, S::Sqrt3_mask<Mesh>(), levels, S::threads(1)),
-         S::make_stencil_table(triangles, S::Sqrt3_mask<Mesh>(), levels, S::threads(2)));
+    same(
+      S::make_stencil_table(triangles, S::Sqrt3_mask<Mesh>(), S::parameters::number_of_iterations(levels).threads(1)),
+      S::make_stencil_table(triangles, S::Sqrt3_mask<Mesh>(), S::parameters::number_of_iterations(levels).threads(2)));
   }
 }
 
@@ -297,10 +300,10 @@ TEST(Parallel, composed_tables_give_the_refined_points)
     Mesh refined = input;
     S::Stencil_table<double> table;
     if(triangles) {
-      table = S::make_stencil_table(input, S::Loop_mask<Mesh>(), 3);
+      table = S::make_stencil_table(input, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(3));
       S::loop_subdivision(refined, CGAL::parameters::number_of_iterations(3));
     } else {
-      table = S::make_stencil_table(input, S::Catmull_clark_mask<Mesh>(), 3);
+      table = S::make_stencil_table(input, S::Catmull_clark_mask<Mesh>(), S::parameters::number_of_iterations(3));
       S::catmull_clark_subdivision(refined, CGAL::parameters::number_of_iterations(3));
     }
     std::vector<Point> coarse(input.points().begin(), input.points().end()), fine;
@@ -316,7 +319,8 @@ TEST(Parallel, composed_tables_give_the_refined_points)
 TEST(Parallel, flat_apply_equals_the_generic_apply)
 {
   const Mesh input = torus(30, 20, false, 9);
-  const auto table = S::make_stencil_table(input, S::Catmull_clark_mask<Mesh>(), 2);
+  const auto table =
+    S::make_stencil_table(input, S::Catmull_clark_mask<Mesh>(), S::parameters::number_of_iterations(2));
   const std::vector<Point> coarse(input.points().begin(), input.points().end());
   std::vector<Point> fine;
   table.apply(coarse, fine);

@@ -54,7 +54,8 @@ TEST(Stencil_table, three_levels_of_loop_in_one_table_equal_subdivide_exactly)
 {
   const Mesh coarse = open_bipyramid_piece();
   Mesh refined;
-  const auto table = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 3, &refined);
+  const auto table =
+    S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(3).refined_mesh(refined));
   Mesh reference = coarse;
   S::loop_subdivision(reference, CGAL::parameters::number_of_iterations(3));
   ASSERT_EQ(table.number_of_stencils(), num_vertices(reference));
@@ -73,7 +74,8 @@ TEST(Stencil_table, three_levels_of_loop_in_one_table_equal_subdivide_exactly)
 TEST(Stencil_table, re_evaluates_moved_control_points_and_other_data)
 {
   const Mesh coarse = open_bipyramid_piece();
-  const auto table = S::make_stencil_table(coarse, S::Loop_mask<Mesh, FT, S::Warren_beta>(), 2);
+  const auto table =
+    S::make_stencil_table(coarse, S::Loop_mask<Mesh, FT, S::Warren_beta>(), S::parameters::number_of_iterations(2));
   // move the control points: the table gives what subdividing the moved mesh gives
   Mesh moved = coarse;
   for(auto v : vertices(moved))
@@ -97,10 +99,12 @@ TEST(Stencil_table, re_evaluates_moved_control_points_and_other_data)
 TEST(Stencil_table, refuses_what_subdivide_refuses_and_mismatched_inputs)
 {
   Mesh empty;
-  EXPECT_NE(
-    testing_utils::bad_input_message([&] { S::make_stencil_table(empty, S::Loop_mask<Mesh>(), 1); }).find("empty"),
-    std::string::npos);
-  const auto table = S::make_stencil_table(open_bipyramid_piece(), S::Loop_mask<Mesh>(), 1);
+  EXPECT_NE(testing_utils::bad_input_message([&] {
+              S::make_stencil_table(empty, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
+            }).find("empty"),
+            std::string::npos);
+  const auto table =
+    S::make_stencil_table(open_bipyramid_piece(), S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
   std::vector<KE::Point_3> too_few(3), out;
   EXPECT_NE(testing_utils::bad_input_message([&] { table.apply(too_few, out); }).find("needs 6 source values"),
             std::string::npos);
@@ -114,7 +118,8 @@ TEST(Stencil_table, every_host_composes_exactly_what_subdivide_makes)
   const Mesh coarse = open_bipyramid_piece();
   const auto check = [&](const auto& mask, const auto& refine, int levels) {
     Mesh refined;
-    const auto table = S::make_stencil_table(coarse, mask, levels, &refined);
+    const auto table =
+      S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).refined_mesh(refined));
     Mesh reference = coarse;
     refine(reference, CGAL::parameters::number_of_iterations(levels));
     EXPECT_EQ(points_of(refined), points_of(reference)) << mask.name() << ", " << levels << " levels";
@@ -137,16 +142,18 @@ TEST(Stencil_table, every_host_composes_exactly_what_subdivide_makes)
 TEST(Stencil_table, named_parameters_without_a_refined_mesh)
 {
   const Mesh coarse = open_bipyramid_piece();
-  const auto a = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2, S::threads(2));
-  const auto b = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2, nullptr, S::threads(1));
-  const auto c = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 2);
+  const auto a = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(2).threads(2));
+  const auto b = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(2).threads(1));
+  const auto c = S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(2));
   ASSERT_EQ(a.number_of_terms(), c.number_of_terms());
   ASSERT_EQ(b.number_of_terms(), c.number_of_terms());
   for(std::size_t t = 0; t < c.number_of_terms(); ++t) {
     EXPECT_EQ(a.weight(t), c.weight(t));
     EXPECT_EQ(b.source(t), c.source(t));
   }
-  EXPECT_EQ(S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), 0).number_of_terms(), num_vertices(coarse));
+  EXPECT_EQ(
+    S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(0)).number_of_terms(),
+    num_vertices(coarse));
 }
 
 namespace {
@@ -245,10 +252,9 @@ TEST(Stencil_table, limit_tables_give_subdivide_then_project_to_limit)
 TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with_any_number_of_threads)
 {
   // make_stencil_table makes each row once, in one pass (in parallel: in
-  // chunks of rows, copied into place), or in two passes when the host visits
-  // its new vertices out of order (sqrt3 refining a border): the table must be
-  // the level tables composed by Stencil_table::then, to the bit, whatever the
-  // number of threads. Grids large enough for many chunks, with a border.
+  // chunks of rows, copied into place): the table must be the level tables
+  // composed by Stencil_table::then, to the bit, whatever the number of
+  // threads. Grids large enough for many chunks, with a border.
   const auto same = [](const S::Stencil_table<double>& a, const S::Stencil_table<double>& b, const std::string& what) {
     ASSERT_EQ(a.number_of_stencils(), b.number_of_stencils()) << what;
     ASSERT_EQ(a.number_of_terms(), b.number_of_terms()) << what;
@@ -261,17 +267,26 @@ TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with
       ASSERT_EQ(std::memcmp(&x, &y, sizeof x), 0) << what << ", term " << t << ": " << x << " vs " << y;
     }
   };
+  // one level's own table, and its topology
+  const auto level_table = [](Double_mesh& work, const auto& mask) {
+    S::internal::Composed_level<double> level{nullptr, num_vertices(work)};
+    const auto points = get(CGAL::vertex_point, work);
+    S::internal::refine_level(work, mask, S::internal::No_points<decltype(points)>{points},
+                              S::internal::Parallel_loop(1), level);
+    return level.table;
+  };
   const auto check = [&](const Double_mesh& coarse, const auto& mask, int levels) {
     Double_mesh work = coarse;
-    auto composed = S::internal::refine_topology_once(work, mask, get(CGAL::vertex_point, work));
+    auto composed = level_table(work, mask);
     for(int level = 1; level < levels; ++level)
-      composed = composed.then(S::internal::refine_topology_once(work, mask, get(CGAL::vertex_point, work)));
+      composed = composed.then(level_table(work, mask));
     for(const int threads : {1, 2, 0})
-      same(S::make_stencil_table(coarse, mask, levels, S::threads(threads)), composed,
+      same(S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).threads(threads)), composed,
            mask.name() + ", " + std::to_string(levels) + " levels, threads " + std::to_string(threads));
     Double_mesh refined;
-    same(S::make_stencil_table(coarse, mask, levels, &refined, S::threads(2)), composed,
-         mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
+    same(
+      S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).refined_mesh(refined).threads(2)),
+      composed, mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
     // the refined mesh: the connectivity subdivide() makes, link for link
     Double_mesh reference = coarse;
     S::subdivide(reference, mask, CGAL::parameters::number_of_iterations(levels));

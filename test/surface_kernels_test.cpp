@@ -107,7 +107,7 @@ void check_scheme(const Mask& mask, const Mesh& mesh, bool interpolating)
 
   // every new vertex's weights sum to 1 (exactly in exact kernels)
   const S::Host_of<Mask> host(mesh);
-  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+  S::internal::for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) {
     S::Stencil<typename Mesh::Vertex_index, FT> stencil;
     report(stencil);
     if constexpr(is_exact<FT>())

@@ -711,7 +711,7 @@ TEST(Displace, carried_heights_reproduce_a_linear_function)
   const auto evaluator = SD::make_limit_evaluator<Warren_loop>();
   SD::Carried_data<Exact_mesh> data;
   data.vertex_map(heights);
-  SD::subdivide(mesh, Warren_loop<Exact_mesh, Q>(), SD::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+  SD::subdivide(mesh, Warren_loop<Exact_mesh, Q>(), SD::parameters::number_of_iterations(2).carried_data(data));
   for(auto v : mesh.vertices())
     EXPECT_EQ(heights[v], linear(mesh.point(v)));
   const auto results = evaluator.evaluate(mesh, mesh.points(), &heights, "test");

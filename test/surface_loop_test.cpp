@@ -324,7 +324,7 @@ TEST(Loop, carries_vertex_data_with_the_same_stencils_and_face_data_to_children)
   S::Carried_data<Exact_mesh> data;
   data.vertex_map(height).vertex_map(shifted).face_map(label).origins(origins);
   const std::size_t vertices_before_last_level = 7 + 11; // V + E of the fan
-  S::loop_subdivision(mesh, S::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+  S::loop_subdivision(mesh, S::parameters::number_of_iterations(2).carried_data(data));
 
   EXPECT_EQ(num_faces(mesh), 16u * 5u);
   // old vertices first, then one vertex per edge

@@ -215,7 +215,7 @@ void expect_weights_sum_to_one(const Exact_mesh& mesh, const Mask& mask)
 {
   const S::Host_of<Mask> host(mesh);
   std::size_t count = 0;
-  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+  S::internal::for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) {
     Stencil stencil;
     report(stencil);
     EXPECT_EQ(stencil.weight_sum(), FX(1)) << mask.name() << ", new vertex " << j;
@@ -338,7 +338,8 @@ TEST(DooSabin, quad_weights_are_the_biquadratic_bspline_weights)
   std::vector<std::vector<VX>> id;
   const Exact_mesh mesh = grid(4, id);
   Stencil ours;
-  S::Doo_sabin_mask<Exact_mesh>().corner_node(S::Corner_view<Exact_mesh>(mesh, halfedge(id[1][1], id[2][1], mesh).first), ours);
+  S::Doo_sabin_mask<Exact_mesh>().corner_node(
+    S::Corner_view<Exact_mesh>(mesh, halfedge(id[1][1], id[2][1], mesh).first), ours);
   EXPECT_EQ(ours.size(), 4u);
   EXPECT_EQ(ours.weight(id[2][1]), FX(9) / FX(16));
   EXPECT_EQ(ours.weight(id[1][1]), FX(3) / FX(16));

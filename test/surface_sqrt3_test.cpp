@@ -291,7 +291,7 @@ TEST(Sqrt3, stencils_sum_to_exactly_one)
   const auto check = [](const Exact_mesh& mesh, const auto& mask, const std::string& what) {
     const S::Sqrt3_split<Exact_mesh> host(mesh);
     std::size_t count = 0;
-    host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) {
+    S::internal::for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) {
       S::Stencil<vertex_descriptor, FT> stencil;
       report(stencil);
       EXPECT_EQ(stencil.weight_sum(), FT(1)) << what << " vertex " << j;
@@ -546,7 +546,7 @@ TEST(Sqrt3, carries_vertex_data_origins_and_face_data)
   std::vector<S::Vertex_origin> origins;
   S::Carried_data<Exact_mesh> data;
   data.vertex_map(height).face_map(label).origins(origins);
-  S::sqrt3_subdivision(mesh, S::carried_data(data, CGAL::parameters::number_of_iterations(2)));
+  S::sqrt3_subdivision(mesh, S::parameters::number_of_iterations(2).carried_data(data));
 
   for(auto v : vertices(mesh))
     EXPECT_EQ(height[v], linear(mesh.point(v)));

@@ -61,7 +61,7 @@ template <class K>
 Job_ptr ours(const Soup& soup, Scheme scheme, int levels)
 {
   using M = CGAL::Surface_mesh<typename K::Point_3>;
-  const auto np = with_threads(1, CGAL::parameters::number_of_iterations(levels));
+  const auto np = subdiv_bench::ours_parameters(levels, 1);
   if(scheme == Scheme::loop)
     return kernel_job<K>(soup, [np](M& m) { CGAL::Subdiv::loop_subdivision(m, np); });
   if(scheme == Scheme::catmull_clark)

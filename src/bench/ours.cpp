@@ -63,13 +63,11 @@ public:
   void prepare() override { m_table = Table(); }
   void run() override
   {
-    const auto np = with_threads(m_threads, CGAL::parameters::default_values());
+    const auto np = ours_parameters(m_levels, m_threads);
     if(m_scheme == Scheme::loop)
-      m_table =
-        CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Loop_mask<Mesh>(), m_levels, (Mesh*)nullptr, np);
+      m_table = CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Loop_mask<Mesh>(), np);
     else
-      m_table = CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), m_levels,
-                                                 (Mesh*)nullptr, np);
+      m_table = CGAL::Subdiv::make_stencil_table(m_input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), np);
   }
 
 private:
@@ -86,12 +84,11 @@ class Ours_apply_job : public Apply_job
 public:
   Ours_apply_job(const Mesh& input, Scheme scheme, int levels)
   {
-    const auto np = with_threads(1, CGAL::parameters::default_values());
+    const auto np = ours_parameters(levels, 1);
     if(scheme == Scheme::loop)
-      m_table = CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Loop_mask<Mesh>(), levels, (Mesh*)nullptr, np);
+      m_table = CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Loop_mask<Mesh>(), np);
     else
-      m_table =
-        CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), levels, (Mesh*)nullptr, np);
+      m_table = CGAL::Subdiv::make_stencil_table(input, CGAL::Subdiv::Catmull_clark_mask<Mesh>(), np);
     for(const Mesh::Vertex_index v : input.vertices())
       m_in.push_back(input.point(v));
     m_out.resize(m_table.number_of_stencils());
@@ -200,7 +197,7 @@ Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threa
 {
   if(threads > 1 && !has_threads)
     return nullptr;
-  const auto np = with_threads(threads, CGAL::parameters::number_of_iterations(levels));
+  const auto np = ours_parameters(levels, threads);
   switch(scheme) {
     case Scheme::loop:
       return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np); });

@@ -3,10 +3,11 @@
 #ifndef CGAL_SUBDIV_CARRIED_DATA_H
 #define CGAL_SUBDIV_CARRIED_DATA_H
 
-#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/internal/parallel.h>
+#include <CGAL/Subdiv/parameters.h>
+#include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/number_utils.h>
 
@@ -37,15 +38,14 @@ namespace Subdiv {
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
- *
  * - `origins(vector)`: fills `vector` with the origin of every vertex of the
  *   last level (the old vertex, edge, face or corner it came from, by ordinal
  *   in the iteration order of the mesh before that level; see `Vertex_origin`).
  *
- * Pass it with `CGAL::Subdiv::carried_data(data, np)` (not in a namespace
- * `parameters`, which would hide CGAL's own from code in CGAL::Subdiv). The maps
- * must accept the new descriptors: property maps of the mesh itself do (for
- * `Surface_mesh`, maps made with `add_property_map`).
+ * Pass it with the named parameter `carried_data`:
+ * `CGAL::Subdiv::parameters::number_of_iterations(2).carried_data(data)`.
+ * The maps must accept the new descriptors: property maps of the mesh itself
+ * do (for `Surface_mesh`, maps made with `add_property_map`).
  */
 template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Carried_data
@@ -53,11 +53,12 @@ class Carried_data
 public:
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  /// the recorded stencil of every new vertex, by new index
   using Vertex_stencils = std::vector<Stencil<vertex_descriptor, FT>>;
   /// after the rebuild: writes the values of the new vertices
   using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
-  /// after the rebuild: writes the values of the new faces
-  using Face_writer = std::function<void(const std::vector<face_descriptor>&, const internal::Face_soup&)>;
+  /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
+  using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
   template <class VertexMap>
   Carried_data& vertex_map(VertexMap map)
@@ -82,11 +83,11 @@ public:
     m_face_channels.push_back([map](const Mesh& mesh) -> Face_writer {
       using Value = typename boost::property_traits<FaceMap>::value_type;
       auto old_values = std::make_shared<std::vector<Value>>();
-      for(face_descriptor f : faces(mesh)) // in iteration order: the ordinals of the soup's parents
+      for(face_descriptor f : faces(mesh)) // in iteration order: the ordinals of the parents
         old_values->push_back(get(map, f));
-      return [map, old_values](const std::vector<face_descriptor>& new_faces, const internal::Face_soup& soup) {
+      return [map, old_values](const std::vector<face_descriptor>& new_faces, const std::vector<std::size_t>& parents) {
         for(std::size_t k = 0; k < new_faces.size(); ++k)
-          put(map, new_faces[k], (*old_values)[soup.parent(k)]);
+          put(map, new_faces[k], (*old_values)[parents[k]]);
       };
     });
     return *this;
@@ -100,32 +101,57 @@ public:
 
   bool empty() const { return m_vertex_channels.empty() && m_face_channels.empty() && m_origins == nullptr; }
 
-  template <class Host>
-  void record_origins(const Host& host) const
+  /*
+   * The sink of `internal::refine_level` that carries the data through one
+   * level: it records every new vertex's stencil (merged, `Stencil::add`) and
+   * the old values, and writes the new values once the level is made. Its
+   * stencils also give the new points (`internal::Row_points`), so that
+   * points and data are combined alike.
+   */
+  class Level
   {
-    if(m_origins == nullptr)
-      return;
-    m_origins->clear();
-    for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
-      m_origins->push_back(host.origin(j));
-  }
+  public:
+    Level(const Carried_data& data, const Mesh& mesh) : m_data(&data), m_mesh(&mesh) {}
 
-  /// reads the old values (before the rebuild) and returns the writers
-  std::vector<Vertex_writer> read_vertices(const Vertex_stencils& stencils) const
-  {
-    std::vector<Vertex_writer> writers;
-    for(const auto& channel : m_vertex_channels)
-      writers.push_back(channel(stencils));
-    return writers;
-  }
+    const Vertex_stencils& stencils() const { return m_stencils.rows; }
 
-  std::vector<Face_writer> read_faces(const Mesh& mesh) const
-  {
-    std::vector<Face_writer> writers;
-    for(const auto& channel : m_face_channels)
-      writers.push_back(channel(mesh));
-    return writers;
-  }
+    template <class Host, class Mask>
+    void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
+    {
+      m_stencils.read(host, mask, loop);
+      if(m_data->m_origins != nullptr) {
+        m_data->m_origins->clear();
+        for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
+          m_data->m_origins->push_back(host.origin(j));
+      }
+      for(const auto& channel : m_data->m_vertex_channels)
+        m_vertex_writers.push_back(channel(m_stencils.rows));
+      for(const auto& channel : m_data->m_face_channels)
+        m_face_writers.push_back(channel(*m_mesh));
+    }
+
+    template <class New_level>
+    void write(const New_level& level)
+    {
+      if(m_vertex_writers.empty() && m_face_writers.empty())
+        return;
+      const auto& elements = level.elements();
+      for(const auto& write : m_vertex_writers)
+        write(elements.vertices);
+      if(m_face_writers.empty())
+        return;
+      const std::vector<std::size_t> parents = level.parents();
+      for(const auto& write : m_face_writers)
+        write(elements.faces, parents);
+    }
+
+  private:
+    const Carried_data* m_data;
+    const Mesh* m_mesh;
+    internal::Stencil_recorder<Mesh, FT> m_stencils;
+    std::vector<Vertex_writer> m_vertex_writers;
+    std::vector<Face_writer> m_face_writers;
+  };
 
 private:
   template <class Value, class VertexMap>
@@ -151,23 +177,6 @@ private:
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
 };
-
-namespace internal {
-/// the tag of the named parameter `carried_data` (not in a namespace called
-/// internal_np, which would hide CGAL's own from code in CGAL::Subdiv)
-struct carried_data_t
-{};
-} // namespace internal
-
-/// named parameter of `subdivide()` and the scheme functions: data to carry;
-/// `np` lets it join other named parameters:
-/// `carried_data(data, CGAL::parameters::number_of_iterations(2))`
-template <class Mesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
-CGAL::Named_function_parameters<const Carried_data<Mesh, FT>*, internal::carried_data_t, NamedParameters> carried_data(
-  const Carried_data<Mesh, FT>& data, const NamedParameters& np = CGAL::parameters::default_values())
-{
-  return {&data, np};
-}
 
 } // namespace Subdiv
 } // namespace CGAL

@@ -23,23 +23,29 @@ namespace internal {
 /// tags of the package's own named parameters (not in a namespace
 /// `internal_np`, which would hide CGAL's from code in CGAL::Subdiv)
 struct carried_data_t
-{
-};
+{};
 struct threads_t
-{
-};
+{};
 struct closed_t
-{
-};
+{};
 struct end_rule_t
-{
-};
+{};
 struct max_output_points_t
-{
-};
+{};
 struct flatness_tolerance_t
-{
-};
+{};
+struct refined_mesh_t
+{};
+struct characteristic_map_t
+{};
+struct verify_limit_t
+{};
+struct max_faces_t
+{};
+struct seed_t
+{};
+struct rings_t
+{};
 
 } // namespace internal
 
@@ -48,8 +54,8 @@ namespace parameters {
 // CGAL's accessors, so that `parameters::choose_parameter` and the like keep
 // working from code in CGAL::Subdiv
 using CGAL::parameters::choose_parameter;
-using CGAL::parameters::default_values;
 using CGAL::parameters::Default_named_parameters;
+using CGAL::parameters::default_values;
 using CGAL::parameters::get_parameter;
 using CGAL::parameters::get_parameter_reference;
 using CGAL::parameters::is_default_parameter;
@@ -70,11 +76,11 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters(const T& v) : Nfp(v) {}
   Named_parameters(const T& v, const Base& b) : Nfp(v, b) {}
 
-#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG)                                                                        \
-  template <class K>                                                                                                   \
-  Named_parameters<K, TAG, self> NAME(const K& k) const                                                                \
-  {                                                                                                                    \
-    return Named_parameters<K, TAG, self>(k, *this);                                                                   \
+#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG)          \
+  template <class K>                                    \
+  Named_parameters<K, TAG, self> NAME(const K& k) const \
+  {                                                     \
+    return Named_parameters<K, TAG, self>(k, *this);    \
   }
   // CGAL's own
   CGAL_SUBDIV_NAMED_PARAMETER(number_of_iterations, CGAL::internal_np::number_of_iterations_t)
@@ -87,6 +93,11 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   CGAL_SUBDIV_NAMED_PARAMETER(end_rule, internal::end_rule_t)
   CGAL_SUBDIV_NAMED_PARAMETER(max_output_points, internal::max_output_points_t)
   CGAL_SUBDIV_NAMED_PARAMETER(flatness_tolerance, internal::flatness_tolerance_t)
+  CGAL_SUBDIV_NAMED_PARAMETER(characteristic_map, internal::characteristic_map_t)
+  CGAL_SUBDIV_NAMED_PARAMETER(verify_limit, internal::verify_limit_t)
+  CGAL_SUBDIV_NAMED_PARAMETER(max_faces, internal::max_faces_t)
+  CGAL_SUBDIV_NAMED_PARAMETER(seed, internal::seed_t)
+  CGAL_SUBDIV_NAMED_PARAMETER(rings, internal::rings_t)
 #undef CGAL_SUBDIV_NAMED_PARAMETER
 
   /// other vertex and face data to carry through the levels (`Carried_data`)
@@ -95,13 +106,20 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   {
     return Named_parameters<const Data*, internal::carried_data_t, self>(&data, *this);
   }
+
+  /// where to put the refined mesh (`make_stencil_table()`)
+  template <class Mesh>
+  Named_parameters<Mesh*, internal::refined_mesh_t, self> refined_mesh(Mesh& mesh) const
+  {
+    return Named_parameters<Mesh*, internal::refined_mesh_t, self>(&mesh, *this);
+  }
 };
 
-#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG)                                                                        \
-  template <class K>                                                                                                   \
-  Named_parameters<K, TAG> NAME(const K& k)                                                                            \
-  {                                                                                                                    \
-    return Named_parameters<K, TAG>(k);                                                                                \
+#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG) \
+  template <class K>                           \
+  Named_parameters<K, TAG> NAME(const K& k)    \
+  {                                            \
+    return Named_parameters<K, TAG>(k);        \
   }
 /// \name CGAL's named parameters that the package reads
 /// @{
@@ -124,6 +142,16 @@ CGAL_SUBDIV_NAMED_PARAMETER(end_rule, internal::end_rule_t)
 CGAL_SUBDIV_NAMED_PARAMETER(max_output_points, internal::max_output_points_t)
 /// Bezier curves: refine each segment until it is this flat (instead of a fixed depth)
 CGAL_SUBDIV_NAMED_PARAMETER(flatness_tolerance, internal::flatness_tolerance_t)
+/// analysis: test the characteristic map, the costliest part (default true)
+CGAL_SUBDIV_NAMED_PARAMETER(characteristic_map, internal::characteristic_map_t)
+/// analysis: subdivide a random neighbourhood and compare its limit with the limit mask (default true)
+CGAL_SUBDIV_NAMED_PARAMETER(verify_limit, internal::verify_limit_t)
+/// analysis: the characteristic-map and verification meshes stop growing at this many faces (default 120000)
+CGAL_SUBDIV_NAMED_PARAMETER(max_faces, internal::max_faces_t)
+/// analysis: the seed of the random neighbourhood of the verification (default 20260)
+CGAL_SUBDIV_NAMED_PARAMETER(seed, internal::seed_t)
+/// analysis: the rings of the neighbourhood of a local subdivision matrix (default: the smallest invariant one)
+CGAL_SUBDIV_NAMED_PARAMETER(rings, internal::rings_t)
 /// @}
 #undef CGAL_SUBDIV_NAMED_PARAMETER
 
@@ -132,6 +160,13 @@ template <class Data>
 Named_parameters<const Data*, internal::carried_data_t> carried_data(const Data& data)
 {
   return Named_parameters<const Data*, internal::carried_data_t>(&data);
+}
+
+/// where to put the refined mesh (`make_stencil_table()`)
+template <class Mesh>
+Named_parameters<Mesh*, internal::refined_mesh_t> refined_mesh(Mesh& mesh)
+{
+  return Named_parameters<Mesh*, internal::refined_mesh_t>(&mesh);
 }
 
 } // namespace parameters

@@ -17,64 +17,73 @@
 #include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Sqrt3_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 namespace CGAL {
 namespace Subdiv {
+namespace internal {
+
+/// the number type of the masks of a call: that of the kernel of its
+/// `geom_traits`, by default the kernel of the points of its `vertex_point_map`
+template <class PolygonMesh, class NamedParameters>
+using Call_FT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type::FT;
+
+} // namespace internal
 
 /// Loop subdivision with Loop's 1987 weights. \sa `subdivide()`, `Loop_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void loop_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Loop_mask<PolygonMesh>(), np);
+  subdivide(mesh, Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Loop subdivision with Warren's rational weights. \sa `subdivide()`, `Loop_mask`, `Warren_beta`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void loop_warren_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Loop_mask<PolygonMesh, internal::Mesh_FT<PolygonMesh>, Warren_beta>(), np);
+  subdivide(mesh, Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>, Warren_beta>(), np);
 }
 
 /// Butterfly subdivision (Dyn, Levin, Gregory 1990, tension 1/16). \sa `subdivide()`, `Butterfly_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void butterfly_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Butterfly_mask<PolygonMesh>(), np);
+  subdivide(mesh, Butterfly_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Modified butterfly subdivision (Zorin, Schroeder, Sweldens 1996). \sa `subdivide()`, `Modified_butterfly_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void modified_butterfly_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Modified_butterfly_mask<PolygonMesh>(), np);
+  subdivide(mesh, Modified_butterfly_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Linear 1-to-4 split of a triangle mesh (edge midpoints). \sa `subdivide()`, `Linear_triangle_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void linear_triangle_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Linear_triangle_mask<PolygonMesh>(), np);
+  subdivide(mesh, Linear_triangle_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Catmull-Clark subdivision of any polygon mesh. \sa `subdivide()`, `Catmull_clark_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void catmull_clark_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Catmull_clark_mask<PolygonMesh>(), np);
+  subdivide(mesh, Catmull_clark_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Doo-Sabin subdivision of any polygon mesh. \sa `subdivide()`, `Doo_sabin_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void doo_sabin_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Doo_sabin_mask<PolygonMesh>(), np);
+  subdivide(mesh, Doo_sabin_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Linear quad split of any polygon mesh (edge midpoints, face centroids). \sa `subdivide()`, `Linear_quad_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void linear_quad_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Linear_quad_mask<PolygonMesh>(), np);
+  subdivide(mesh, Linear_quad_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Kobbelt's sqrt3 subdivision of a triangle mesh. The border is refined on
@@ -83,7 +92,7 @@ void linear_quad_subdivision(PolygonMesh& mesh, const NamedParameters& np = para
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Sqrt3_mask<PolygonMesh>(), np);
+  subdivide(mesh, Sqrt3_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Labsik and Greiner's interpolating sqrt3 subdivision of a triangle mesh,
@@ -91,7 +100,7 @@ void sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void interpolating_sqrt3_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Interpolating_sqrt3_mask<PolygonMesh>(), np);
+  subdivide(mesh, Interpolating_sqrt3_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
 }
 
 /// Linear refinement: positions unchanged, the 1-to-4 split on a triangle

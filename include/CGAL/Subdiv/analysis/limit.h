@@ -509,7 +509,7 @@ public:
     const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 0);
     constexpr bool callable = std::is_invocable<const Height&, const Point&>::value;
     std::vector<internal::Vertex_limit<Point>> results;
-    const auto level_np = CGAL::parameters::number_of_iterations(levels).vertex_point_map(vpm);
+    const auto level_np = parameters::number_of_iterations(levels).vertex_point_map(vpm);
     if constexpr(callable) {
       if(levels > 0)
         subdivide(mesh, mask<PolygonMesh, FT>(), level_np);
@@ -520,7 +520,7 @@ public:
       if(levels > 0) {
         Carried_data<PolygonMesh, FT> data;
         data.vertex_map(height);
-        subdivide(mesh, mask<PolygonMesh, FT>(), carried_data(data, level_np));
+        subdivide(mesh, mask<PolygonMesh, FT>(), level_np.carried_data(data));
       }
       results = evaluate(mesh, vpm, &height, "displace");
     }
@@ -772,7 +772,7 @@ private:
       data.vertex_map(copy_heights);
     if(border_is_pending(copy) != border_is_pending(mesh))
       throw Bad_input(caller + ": the copy of the mesh does not keep the border phase of sqrt3");
-    subdivide(copy, mask<Copy, FT>(), carried_data(data, CGAL::parameters::number_of_iterations(1)));
+    subdivide(copy, mask<Copy, FT>(), parameters::number_of_iterations(1).carried_data(data));
     std::vector<typename Copy::Vertex_index> descendant_of_old(v2v.size() + 1);
     std::vector<char> has_descendant(v2v.size() + 1, 0);
     for(std::size_t j = 0; j < origins.size(); ++j)

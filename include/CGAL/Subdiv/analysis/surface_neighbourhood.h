@@ -8,9 +8,11 @@
 /// of a surface scheme, built as a real mesh, refined by the scheme's own host
 /// and mask, and the local subdivision matrix read from the recorded stencils.
 
+#include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/refinement/refine_level.h>
+#include <CGAL/Subdiv/stencils/Row_builder.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
 #include <CGAL/Exact_rational.h>
@@ -165,72 +167,30 @@ inline Patch build_patch(int face_size, bool face_centred, int n, bool border, i
 }
 
 /*
- * The canonical numbering ("labels") of the vertices within `rings` rings of
- * the centre, the same for every patch whose neighbourhood has the same
- * connectivity:
- * - ring 0: the centre (vertex centre) or the corners of the central face,
- *   from the first one along the face (face centre);
- * - then breadth first: a vertex v is read by walking counter-clockwise
- *   around it, from the halfedge by which it was reached, over its faces,
- *   each face's vertices listed in face order after v; every vertex not yet
- *   labelled gets the next label and ring(v) + 1, if that is <= rings.
- * For a vertex centre the walk starts at `start`, so label 1 is the target
- * of `start`: for Loop ring 1 is v_0, v_1, ..., v_{n-1} counter-clockwise;
- * for Catmull-Clark it is e_0, f_0, e_1, f_1, ... (edge neighbours at odd
- * labels, face neighbours at even labels).
+ * The labels of the vertices within `rings` rings of the centre given by
+ * `start` (see `Neighbourhood_walk`, the one walk of the package), on an
+ * analysis mesh.
  */
 struct Labelling
 {
   std::vector<Analysis_vertex> vertex_of; // by label
   std::vector<int> ring;                  // by label
-  std::map<Analysis_vertex, int> label_of;
+  std::vector<int> label_by_index;        // by vertex index, -1 for no label
 
   std::size_t size() const { return vertex_of.size(); }
-  int label(Analysis_vertex v) const
-  {
-    const auto found = label_of.find(v);
-    return found == label_of.end() ? -1 : found->second;
-  }
+  int label(Analysis_vertex v) const { return v.idx() < label_by_index.size() ? label_by_index[v.idx()] : -1; }
 };
 
 inline Labelling label_neighbourhood(const Analysis_mesh& mesh, Analysis_halfedge start, bool face_centred, int rings)
 {
+  Neighbourhood_walk<Analysis_mesh> walk(mesh);
+  walk.read(start, face_centred, rings);
   Labelling result;
-  std::vector<Analysis_halfedge> entry; // by label: the halfedge leaving the vertex the walk starts at
-  const auto add = [&](Analysis_vertex v, int ring, Analysis_halfedge out) {
-    result.label_of.emplace(v, static_cast<int>(result.vertex_of.size()));
-    result.vertex_of.push_back(v);
-    result.ring.push_back(ring);
-    entry.push_back(out);
-  };
-  if(face_centred) {
-    Analysis_halfedge h = start;
-    do {
-      add(mesh.source(h), 0, h);
-      h = mesh.next(h);
-    } while(h != start);
-  } else {
-    add(mesh.source(start), 0, start);
-  }
-  for(std::size_t i = 0; i < result.vertex_of.size(); ++i) {
-    if(result.ring[i] >= rings)
-      continue;
-    const Analysis_halfedge first = entry[i];
-    Analysis_halfedge h = first;
-    do {
-      if(!mesh.is_border(h)) {
-        // the vertices of face(h) after source(h), in face order
-        for(Analysis_halfedge g = h; mesh.target(g) != mesh.source(h); g = mesh.next(g)) {
-          const Analysis_vertex u = mesh.target(g);
-          if(result.label_of.count(u) == 0)
-            add(u, result.ring[i] + 1, mesh.next(g));
-        }
-      }
-      h = mesh.opposite(mesh.prev(h)); // counter-clockwise around source(h)
-      if(mesh.is_border(mesh.opposite(h)) && mesh.is_border(h))
-        break; // isolated edge: cannot happen in a patch
-    } while(h != first);
-  }
+  result.vertex_of = walk.vertices;
+  result.ring = walk.ring_of_label;
+  result.label_by_index.assign(mesh.number_of_vertices(), -1);
+  for(std::size_t i = 0; i < result.vertex_of.size(); ++i)
+    result.label_by_index[result.vertex_of[i].idx()] = static_cast<int>(i);
   return result;
 }
 
@@ -293,28 +253,13 @@ template <class Mask>
 Analysis_mesh refine_recording(const Analysis_mesh& mesh, const Mask& mask,
                                std::vector<Vertex_stencil<typename Mask::Number_type>>& stencils)
 {
-  using FT = typename Mask::Number_type;
-  using Host = Host_of<Mask>;
-  const Host host(mesh);
-  stencils.assign(host.number_of_new_vertices(), Vertex_stencil<FT>());
-  host.for_each_new_vertex(mask, [&](std::size_t j, const auto& report) { report(stencils[j]); });
-  std::vector<Analysis_mesh::Point> points;
-  points.reserve(stencils.size());
-  for(const auto& stencil : stencils) {
-    double p[3] = {0, 0, 0};
-    for(const auto& term : stencil.terms()) {
-      const double w = CGAL::to_double(term.second);
-      const auto& q = mesh.point(term.first);
-      p[0] += w * q.x();
-      p[1] += w * q.y();
-      p[2] += w * q.z();
-    }
-    points.emplace_back(p[0], p[1], p[2]);
-  }
-  const Face_soup soup = host.faces();
+  using Points = std::decay_t<decltype(std::declval<Analysis_mesh&>().points())>;
   Analysis_mesh refined = mesh;
   refined.collect_garbage();
-  rebuild_mesh(refined, refined.points(), points, soup);
+  Stencil_recorder<Analysis_mesh, typename Mask::Number_type> recorder;
+  const Row_points<Points, decltype(recorder.rows)> points{refined.points(), &recorder.rows};
+  refine_level(refined, mask, points, Parallel_loop(1), recorder);
+  stencils = std::move(recorder.rows);
   return refined;
 }
 
@@ -365,12 +310,20 @@ Analysed_step<Mask> analysed_step(const Analysis_mesh& mesh, Analysis_halfedge s
     Analysis_mesh next = refine_recording(current, mask, stencils);
     if(step == 0) {
       composed = stencils;
-    } else { // compose: sources of `stencils` are vertices of `current`
+    } else { // compose: sources of `stencils` are vertices of `current`, those of `composed` of `mesh`
       std::vector<Vertex_stencil<FT>> total(stencils.size());
-      for(std::size_t j = 0; j < stencils.size(); ++j)
-        for(const auto& term : stencils[j].terms())
-          for(const auto& inner : composed[term.first.idx()].terms())
-            total[j].add(inner.first, FT(term.second * inner.second));
+      Row_builder<FT> builder;
+      const auto index_of = [](Analysis_vertex v) { return v.idx(); };
+      for(std::size_t j = 0; j < stencils.size(); ++j) {
+        std::size_t room = 0;
+        for(const auto& term : stencils[j])
+          room += composed[term.first.idx()].size();
+        builder.start(mesh.number_of_vertices(), room);
+        for(const auto& term : stencils[j])
+          builder.add_terms(composed[term.first.idx()], term.second, index_of);
+        for(std::size_t k = 0; k < builder.size(); ++k)
+          total[j].add(Analysis_vertex(builder.source(k)), builder.weight(k));
+      }
       composed.swap(total);
     }
     // where the centre went, in `next`

@@ -6,7 +6,7 @@
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/refinement/Child_faces.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -58,6 +58,7 @@ template <class Mesh>
 class Dual_split
 {
 public:
+  using Polygon_mesh = Mesh;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
@@ -80,8 +81,10 @@ public:
       m_corner_count(0), m_interior_count(0), m_edge_count(0), m_vertex_face_count(0), m_closing_count(0)
   {
     for(face_descriptor f : CGAL::faces(mesh))
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
         m_corner[m_number(h)] = static_cast<Index>(m_corner_count++);
+        m_halfedge_of_corner.push_back(h);
+      }
     m_edge_count = m_corner_count;
     for(auto e : edges(mesh)) {
       if(CGAL::is_border(e, mesh))
@@ -110,26 +113,21 @@ public:
   std::size_t number_of_new_vertices() const { return m_corner_count; }
   std::size_t number_of_new_faces() const { return num_faces(m_mesh) + m_interior_count + m_vertex_face_count; }
 
+  /// the ordinals of the old elements that the new ones are numbered by
+  const internal::Mesh_numbering<Mesh>& numbering() const { return m_number; }
+
   Vertex_origin origin(std::size_t j) const { return {Origin_kind::corner, j}; }
 
-  /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
-  /// Surface_mesh), visit is called from several threads, once per vertex.
-  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
+  /// the mask's weights of new vertex j (the corner of ordinal j) to `acc`;
+  /// reads only the old elements
+  template <class Mask, class Accumulator>
+  void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
-    internal::for_each_element(m_number, CGAL::faces(m_mesh), num_faces(m_mesh), loop, [&](face_descriptor f) {
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        visit(corner(h), [&](auto& acc) { mask.corner_node(Corner_view<Mesh>(m_mesh, h), acc); });
-    });
+    mask.corner_node(Corner_view<Mesh>(m_mesh, m_halfedge_of_corner[j]), acc);
   }
 
-  /// the new faces (written in this thread, with their parents, whatever the arguments)
-  template <class Loop>
-  internal::Face_soup faces(const Loop&, bool) const
-  {
-    return faces();
-  }
+  /// the new faces (made in this thread, whatever `loop`)
+  internal::Face_soup child_faces(const internal::Parallel_loop&) const { return faces(); }
 
   /*
    * New edges: first one per corner, the edge of the face face along the
@@ -217,8 +215,9 @@ private:
 
   const Mesh& m_mesh;
   internal::Mesh_numbering<Mesh> m_number;
-  std::vector<Index> m_corner;      // by halfedge number: corner ordinal, or none on the border
-  std::vector<Index> m_vertex_edge; // by halfedge number: see vertex_edge(), or none
+  std::vector<Index> m_corner;                           // by halfedge number: corner ordinal, or none on the border
+  std::vector<halfedge_descriptor> m_halfedge_of_corner; // by corner ordinal
+  std::vector<Index> m_vertex_edge;                      // by halfedge number: see vertex_edge(), or none
   std::size_t m_corner_count;
   std::size_t m_interior_count;
   std::size_t m_edge_count;        // new edges but the closing ones

@@ -6,12 +6,13 @@
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/refinement/Child_faces.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,6 +42,7 @@ template <class Mesh>
 class Quad_split
 {
 public:
+  using Polygon_mesh = Mesh;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
@@ -70,12 +72,15 @@ public:
         ++m_corner_count;
   }
 
-  /// the new faces are quads, made from a `Split_snapshot` of the old mesh
+  /// the new faces are quads
   static constexpr int new_face_size = 4;
 
   std::size_t number_of_new_vertices() const { return m_vertex_count + m_edge_count + m_face_count; }
   std::size_t number_of_new_edges() const { return 2 * m_edge_count + m_corner_count; }
   std::size_t number_of_new_faces() const { return m_corner_count; }
+
+  /// the ordinals of the old elements that the new ones are numbered by
+  const internal::Mesh_numbering<Mesh>& numbering() const { return m_number; }
 
   Vertex_origin origin(std::size_t j) const
   {
@@ -86,68 +91,56 @@ public:
     return {Origin_kind::face, j - m_vertex_count - m_edge_count};
   }
 
-  /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
-  /// Surface_mesh), visit is called from several threads, once per vertex.
-  /// Reads only the old elements (and the counts taken at construction).
-  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
+  /// the mask's weights of new vertex j (j < number_of_new_vertices()) to
+  /// `acc`; reads only the old elements (and the counts taken at construction)
+  template <class Mask, class Accumulator>
+  void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
     const Border_corners corners = internal::border_corners_of(mask);
-    internal::for_each_element_of(
-      m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(Vertex_view<Mesh>(m_mesh, v, corners), acc); }); });
-    internal::for_each_element_of(
-      m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
-      [&](auto e) {
-        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(Edge_view<Mesh>(m_mesh, halfedge(e, m_mesh), corners), acc); });
-      });
-    internal::for_each_element_of(
-      m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
-      [&](face_descriptor f) {
-        visit(m_vertex_count + m_edge_count + m_number(f), [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f, corners), acc); });
-      });
+    if(j < m_vertex_count)
+      mask.vertex_node(Vertex_view<Mesh>(m_mesh, m_number.vertex(j), corners), acc);
+    else if(j < m_vertex_count + m_edge_count)
+      mask.edge_node(Edge_view<Mesh>(m_mesh, m_number.halfedge(2 * (j - m_vertex_count)), corners), acc);
+    else
+      mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(j - m_vertex_count - m_edge_count), corners), acc);
   }
 
   /*
-   * What the new faces are made from: the corners of the old faces, counted
-   * in face order, around each face from `halfedge(f)` (the running sum of
-   * the face sizes: made in two passes when parallel), and the border
-   * halfedges if `border`; in parallel chunks by `loop` (Surface_mesh).
-   * Reads only the old elements.
+   * The new faces, made from a snapshot of the corners of the old faces,
+   * counted in face order, around each face from `halfedge(f)` (the running
+   * sum of the face sizes: made in two passes when parallel); in parallel
+   * chunks by `loop` (Surface_mesh). Reads only the old elements.
    */
-  template <class Loop = internal::Parallel_loop>
-  internal::Split_snapshot snapshot(const Loop& loop, bool border) const
+  internal::Split_faces<Quad_split> child_faces(const internal::Parallel_loop& loop) const
   {
-    using Index = internal::Split_snapshot::Index;
-    internal::Face_soup::check_counts(number_of_new_vertices(), number_of_new_edges());
+    using Index = internal::Child_index;
+    internal::check_child_counts(number_of_new_vertices(), number_of_new_edges());
     internal::Split_snapshot s;
     s.face_count = m_face_count;
     s.face_size = 0;
     s.corners.resize_for_overwrite(m_corner_count);
     s.first_corner.resize_for_overwrite(m_face_count + 1);
-    const auto faces = [&] { return CGAL::faces(m_mesh); };
-    // writes the corners of f from s.first_corner[f]; returns how many
-    const auto write_corners = [&](face_descriptor f) {
-      const halfedge_descriptor first = halfedge(f, m_mesh);
+    // writes the corners of face f from s.first_corner[f]; returns how many
+    const auto write_corners = [&](std::size_t f) {
+      const halfedge_descriptor first = halfedge(m_number.face(f), m_mesh);
       halfedge_descriptor h = first;
-      std::size_t c = s.first_corner[m_number(f)];
+      std::size_t c = s.first_corner[f];
       do {
         s.corners[c++] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
         h = next(h, m_mesh);
       } while(h != first);
-      return c - s.first_corner[m_number(f)];
+      return c - s.first_corner[f];
     };
     if(loop.is_parallel() && internal::Mesh_numbering<Mesh>::dense) {
-      internal::for_each_element_of(m_number, faces, m_face_count, loop, [&](face_descriptor f) {
+      internal::for_each_ordinal(m_number, m_face_count, loop, [&](std::size_t f) {
         std::size_t size = 0;
-        const halfedge_descriptor first = halfedge(f, m_mesh);
+        const halfedge_descriptor first = halfedge(m_number.face(f), m_mesh);
         halfedge_descriptor h = first;
         do {
           ++size;
           h = next(h, m_mesh);
         } while(h != first);
-        s.first_corner[m_number(f)] = static_cast<Index>(size);
+        s.first_corner[f] = static_cast<Index>(size);
       });
       std::size_t sum = 0;
       for(std::size_t f = 0; f < m_face_count; ++f) {
@@ -155,18 +148,18 @@ public:
         s.first_corner[f] = static_cast<Index>(sum);
         sum += size;
       }
-      internal::for_each_element_of(m_number, faces, m_face_count, loop, write_corners);
+      internal::for_each_ordinal(m_number, m_face_count, loop, write_corners);
     } else { // in face order, in this thread
       std::size_t running = 0;
-      internal::for_each_element_of(m_number, faces, m_face_count, internal::Parallel_loop(1), [&](face_descriptor f) {
-        s.first_corner[m_number(f)] = static_cast<Index>(running);
+      for(std::size_t f = 0; f < m_face_count; ++f) {
+        s.first_corner[f] = static_cast<Index>(running);
         running += write_corners(f);
-      });
+      }
     }
     s.first_corner[m_face_count] = static_cast<Index>(m_corner_count);
-    if(border && m_corner_count != 2 * m_edge_count)
+    if(m_corner_count != 2 * m_edge_count)
       internal::snapshot_border(m_mesh, m_number, 2 * m_edge_count, s);
-    return s;
+    return internal::Split_faces<Quad_split>(*this, std::move(s));
   }
 
   /*
@@ -181,8 +174,8 @@ public:
   template <class Emit>
   void for_each_new_face(const internal::Split_snapshot& s, std::size_t parent, const Emit& emit) const
   {
-    using Index = internal::Face_soup::Index;
-    using Corner = internal::Face_soup::Corner;
+    using Index = internal::Child_index;
+    using Corner = internal::Face_corner;
     const std::size_t begin = s.begin(parent), end = s.end(parent);
     const Index face_point = static_cast<Index>(m_vertex_count + m_edge_count + parent);
     const std::size_t first_inner = 2 * m_edge_count;
@@ -196,17 +189,6 @@ public:
         {face_point, static_cast<Index>(2 * (first_inner + c) + 1)}};
       emit(c, quad);
     }
-  }
-
-  /// the new faces, with their parents
-  internal::Face_soup faces() const { return faces(internal::Parallel_loop(1), true); }
-
-  /// the new faces, written in parallel chunks by `loop` (Surface_mesh), with
-  /// their parents or not
-  template <class Loop>
-  internal::Face_soup faces(const Loop& loop, bool parents) const
-  {
-    return internal::split_soup(*this, snapshot(loop, false), loop, parents);
   }
 
 private:

@@ -6,7 +6,7 @@
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/refinement/Child_faces.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -138,10 +138,11 @@ template <class Mesh>
 class Sqrt3_split
 {
 public:
+  using Polygon_mesh = Mesh;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
-  using Index = internal::Face_soup::Index;
+  using Index = internal::Child_index;
 
   static constexpr int required_face_size = 3;
   /// for the analysis: the faces of the regular meshes, a neighbourhood
@@ -194,6 +195,7 @@ public:
         if(is_border(opposite(h, mesh), mesh)) {
           on_border = true;
           m_edge_of_border_face.push_back(static_cast<Index>(m_number(edge(h, mesh))));
+          m_border_halfedge_of_border_face.push_back(h);
         }
       if(on_border) {
         m_face_vertex[m_number(f)] = static_cast<Index>(border_point);
@@ -220,6 +222,9 @@ public:
 
   /// face points have `Origin_kind::face`; on a refining step, both new
   /// vertices of a border edge have `Origin_kind::edge` and the edge's ordinal
+  /// the ordinals of the old elements that the new ones are numbered by
+  const internal::Mesh_numbering<Mesh>& numbering() const { return m_number; }
+
   Vertex_origin origin(std::size_t j) const
   {
     if(j < m_vertex_count)
@@ -232,50 +237,33 @@ public:
     return {Origin_kind::edge, m_edge_of_border_face[(k - m_face_of_point.size()) / 2]};
   }
 
-  /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
-  /// Surface_mesh), visit is called from several threads, once per vertex.
-  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
+  /// the mask's weights of new vertex j (j < number_of_new_vertices()) to
+  /// `acc`; reads only the old elements
+  template <class Mask, class Accumulator>
+  void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
-    internal::for_each_element(m_number, vertices(m_mesh), m_vertex_count, loop, [&](vertex_descriptor v) {
-      const std::size_t j = m_number(v);
-      const Vertex_view<Mesh> view(m_mesh, v);
+    if(j < m_vertex_count) {
+      const Vertex_view<Mesh> view(m_mesh, m_number.vertex(j));
       if(!view.on_border())
-        visit(j, [&](auto& acc) { mask.vertex_node(view, acc); });
+        mask.vertex_node(view, acc);
       else if(m_refine_border)
-        visit(j, [&](auto& acc) { mask.border_vertex_node(view, acc); });
+        mask.border_vertex_node(view, acc);
       else
-        visit(j, [&](auto& acc) { mask.resting_border_vertex_node(view, acc); });
-    });
-    internal::for_each_element(m_number, CGAL::faces(m_mesh), m_face_count, loop, [&](face_descriptor f) {
-      if(!m_refine_border) {
-        visit(m_vertex_count + m_number(f), [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f), acc); });
-        return;
-      }
-      const std::size_t j = m_face_vertex[m_number(f)];
-      halfedge_descriptor border_edge = boost::graph_traits<Mesh>::null_halfedge();
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        if(is_border(opposite(h, m_mesh), m_mesh))
-          border_edge = h;
-      if(border_edge == boost::graph_traits<Mesh>::null_halfedge()) {
-        visit(j, [&](auto& acc) { mask.face_node(Face_view<Mesh>(m_mesh, f), acc); });
-      } else {
-        const Edge_view<Mesh> edge(m_mesh, border_edge);
-        visit(j, [&](auto& acc) { mask.border_edge_node(edge, 1, acc); });
-        visit(j + 1, [&](auto& acc) { mask.border_edge_node(edge, 2, acc); });
-      }
-    });
+        mask.resting_border_vertex_node(view, acc);
+      return;
+    }
+    const std::size_t k = j - m_vertex_count;
+    if(!m_refine_border)
+      return mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(k)), acc);
+    if(k < m_face_of_point.size())
+      return mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(m_face_of_point[k])), acc);
+    // on a refining step, the two new vertices of a border edge: p1, then p2
+    const std::size_t b = k - m_face_of_point.size();
+    mask.border_edge_node(Edge_view<Mesh>(m_mesh, m_border_halfedge_of_border_face[b / 2]), 1 + int(b % 2), acc);
   }
 
-  /// the new faces (written in this thread, with their parents, whatever the arguments)
-  template <class Loop>
-  internal::Face_soup faces(const Loop&, bool) const
-  {
-    return faces();
-  }
-
-  internal::Face_soup faces() const
+  /// the new faces (made in this thread, whatever `loop`)
+  internal::Face_soup child_faces(const internal::Parallel_loop&) const
   {
     internal::Face_soup soup(number_of_new_vertices(), number_of_new_edges());
     soup.reserve(3 * m_face_count, 9 * m_face_count);
@@ -378,10 +366,12 @@ private:
   std::size_t m_face_count;
   std::size_t m_border_edges = 0;
   bool m_refine_border = false;
-  std::vector<Index> m_slot;                    // spoke slot of each halfedge (mesh with border)
-  std::vector<Index> m_face_vertex;             // refining step: face point, or p1 of a border face
-  std::vector<Index> m_face_of_point;           // refining step: the face of each face point
-  std::vector<Index> m_edge_of_border_face;     // refining step: the border edge of each border face
+  std::vector<Index> m_slot;                // spoke slot of each halfedge (mesh with border)
+  std::vector<Index> m_face_vertex;         // refining step: face point, or p1 of a border face
+  std::vector<Index> m_face_of_point;       // refining step: the face of each face point
+  std::vector<Index> m_edge_of_border_face; // refining step: the border edge of each border face
+  std::vector<halfedge_descriptor>
+    m_border_halfedge_of_border_face; // refining step: its border edge, as a face halfedge
 };
 
 } // namespace Subdiv

@@ -6,11 +6,12 @@
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
-#include <CGAL/Subdiv/internal/rebuild_mesh.h>
+#include <CGAL/Subdiv/refinement/Child_faces.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cstddef>
+#include <utility>
 
 namespace CGAL {
 namespace Subdiv {
@@ -33,6 +34,7 @@ template <class Mesh>
 class Triangle_quadrisection
 {
 public:
+  using Polygon_mesh = Mesh;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
@@ -51,7 +53,7 @@ public:
     return true;
   }
 
-  /// the new faces are triangles, made from a `Split_snapshot` of the old mesh
+  /// the new faces are triangles
   static constexpr int new_face_size = 3;
 
   explicit Triangle_quadrisection(const Mesh& mesh)
@@ -63,53 +65,45 @@ public:
   std::size_t number_of_new_edges() const { return 2 * m_edge_count + 3 * m_face_count; }
   std::size_t number_of_new_faces() const { return 4 * m_face_count; }
 
+  /// the ordinals of the old elements that the new ones are numbered by
+  const internal::Mesh_numbering<Mesh>& numbering() const { return m_number; }
+
   Vertex_origin origin(std::size_t j) const
   {
     return j < m_vertex_count ? Vertex_origin{Origin_kind::vertex, j}
                               : Vertex_origin{Origin_kind::edge, j - m_vertex_count};
   }
 
-  /// calls visit(new index, report) for every new vertex; report(acc) makes the
-  /// mask report that vertex's weights to `acc`. With a parallel `loop` (and a
-  /// Surface_mesh), visit is called from several threads, once per vertex.
-  /// Reads only the old elements (and the counts taken at construction).
-  template <class Mask, class Visitor, class Loop = internal::Parallel_loop>
-  void for_each_new_vertex(const Mask& mask, Visitor&& visit, const Loop& loop = Loop()) const
+  /// the mask's weights of new vertex j (j < number_of_new_vertices()) to
+  /// `acc`; reads only the old elements (and the counts taken at construction)
+  template <class Mask, class Accumulator>
+  void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
     const Border_corners corners = internal::border_corners_of(mask);
-    internal::for_each_element_of(
-      m_number, [&] { return vertices(m_mesh); }, m_vertex_count, loop,
-      [&](vertex_descriptor v) { visit(m_number(v), [&](auto& acc) { mask.vertex_node(Vertex_view<Mesh>(m_mesh, v, corners), acc); }); });
-    internal::for_each_element_of(
-      m_number, [&] { return edges(m_mesh); }, m_edge_count, loop,
-      [&](auto e) {
-        visit(m_vertex_count + m_number(e), [&](auto& acc) { mask.edge_node(Edge_view<Mesh>(m_mesh, halfedge(e, m_mesh), corners), acc); });
-      });
+    if(j < m_vertex_count)
+      mask.vertex_node(Vertex_view<Mesh>(m_mesh, m_number.vertex(j), corners), acc);
+    else
+      mask.edge_node(Edge_view<Mesh>(m_mesh, m_number.halfedge(2 * (j - m_vertex_count)), corners), acc);
   }
 
-  /// what the new faces are made from: the corners of the old faces (from
-  /// halfedge(f)), and the border halfedges if `border`; in parallel chunks
-  /// by `loop` (Surface_mesh). Reads only the old elements.
-  template <class Loop = internal::Parallel_loop>
-  internal::Split_snapshot snapshot(const Loop& loop, bool border) const
+  /// the new faces, made from a snapshot of the old mesh's faces (in parallel
+  /// chunks by `loop` on a Surface_mesh); reads only the old elements
+  internal::Split_faces<Triangle_quadrisection> child_faces(const internal::Parallel_loop& loop) const
   {
-    using Index = internal::Split_snapshot::Index;
-    internal::Face_soup::check_counts(number_of_new_vertices(), number_of_new_edges());
+    using Index = internal::Child_index;
+    internal::check_child_counts(number_of_new_vertices(), number_of_new_edges());
     internal::Split_snapshot s;
     s.face_count = m_face_count;
     s.face_size = 3;
     s.corners.resize_for_overwrite(3 * m_face_count);
-    internal::for_each_element_of(
-      m_number, [&] { return CGAL::faces(m_mesh); }, m_face_count, loop,
-      [&](auto f) {
-        halfedge_descriptor h = halfedge(f, m_mesh);
-        const std::size_t c = 3 * m_number(f);
-        for(std::size_t k = 0; k < 3; ++k, h = next(h, m_mesh))
-          s.corners[c + k] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
-      });
-    if(border && 3 * m_face_count != 2 * m_edge_count)
+    internal::for_each_ordinal(m_number, m_face_count, loop, [&](std::size_t f) {
+      halfedge_descriptor h = halfedge(m_number.face(f), m_mesh);
+      for(std::size_t k = 0; k < 3; ++k, h = next(h, m_mesh))
+        s.corners[3 * f + k] = {static_cast<Index>(m_number(h)), static_cast<Index>(m_number(target(h, m_mesh)))};
+    });
+    if(3 * m_face_count != 2 * m_edge_count)
       internal::snapshot_border(m_mesh, m_number, 2 * m_edge_count, s);
-    return s;
+    return internal::Split_faces<Triangle_quadrisection>(*this, std::move(s));
   }
 
   /*
@@ -123,8 +117,8 @@ public:
   template <class Emit>
   void for_each_new_face(const internal::Split_snapshot& s, std::size_t parent, const Emit& emit) const
   {
-    using Index = internal::Face_soup::Index;
-    using Corner = internal::Face_soup::Corner;
+    using Index = internal::Child_index;
+    using Corner = internal::Face_corner;
     const internal::Split_snapshot::Corner* h = &s.corners[3 * parent];
     Index corner[3], middle[3], inner[3], first[3], second[3];
     for(std::size_t k = 0; k < 3; ++k) {
@@ -141,17 +135,6 @@ public:
     }
     const Corner c[3] = {{middle[0], inner[0]}, {middle[1], inner[1]}, {middle[2], inner[2]}}; // middle triangle
     emit(4 * parent + 3, c);
-  }
-
-  /// the new faces, with their parents
-  internal::Face_soup faces() const { return faces(internal::Parallel_loop(1), true); }
-
-  /// the new faces, written in parallel chunks by `loop` (Surface_mesh), with
-  /// their parents or not
-  template <class Loop>
-  internal::Face_soup faces(const Loop& loop, bool parents) const
-  {
-    return internal::split_soup(*this, snapshot(loop, false), loop, parents);
   }
 
 private:

@@ -11,10 +11,19 @@
 #include <cstddef>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Subdiv {
 namespace internal {
+
+// halfedge(e) of any FaceGraph, for classes whose member `halfedge()` hides the free function
+template <class Mesh>
+typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_of_edge(
+  typename boost::graph_traits<Mesh>::edge_descriptor e, const Mesh& mesh)
+{
+  return halfedge(e, mesh);
+}
 
 /*
  * Dense ordinals 0..n-1 of the vertices, edges and faces of a mesh, in its
@@ -35,26 +44,26 @@ public:
   static constexpr bool dense = false;
 
   explicit Mesh_numbering(const Mesh& mesh)
-    : m_vertex(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh)),
+    : m_mesh(&mesh), m_vertex(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh)),
       m_edge(get(CGAL::dynamic_edge_property_t<std::size_t>(), mesh)),
       m_halfedge(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), mesh)),
       m_face(get(CGAL::dynamic_face_property_t<std::size_t>(), mesh))
   {
-    std::size_t i = 0;
-    for(auto v : vertices(mesh))
-      put(m_vertex, v, i++);
-    i = 0;
-    for(auto e : edges(mesh))
-      put(m_edge, e, i++);
-    i = 0;
-    for(auto e : edges(mesh)) {
-      put(m_halfedge, halfedge(e, mesh), 2 * i);
-      put(m_halfedge, opposite(halfedge(e, mesh), mesh), 2 * i + 1);
-      ++i;
+    for(auto v : vertices(mesh)) {
+      put(m_vertex, v, m_vertices.size());
+      m_vertices.push_back(v);
     }
-    i = 0;
-    for(auto f : faces(mesh))
-      put(m_face, f, i++);
+    for(auto e : edges(mesh)) {
+      const std::size_t i = m_edges.size();
+      put(m_edge, e, i);
+      put(m_halfedge, halfedge_of_edge(e, mesh), 2 * i);
+      put(m_halfedge, opposite(halfedge_of_edge(e, mesh), mesh), 2 * i + 1);
+      m_edges.push_back(e);
+    }
+    for(auto f : faces(mesh)) {
+      put(m_face, f, m_faces.size());
+      m_faces.push_back(f);
+    }
   }
 
   std::size_t operator()(typename GT::vertex_descriptor v) const { return get(m_vertex, v); }
@@ -62,7 +71,21 @@ public:
   std::size_t operator()(typename GT::halfedge_descriptor h) const { return get(m_halfedge, h); }
   std::size_t operator()(typename GT::face_descriptor f) const { return get(m_face, f); }
 
+  /// the element of ordinal i
+  typename GT::vertex_descriptor vertex(std::size_t i) const { return m_vertices[i]; }
+  typename GT::edge_descriptor edge(std::size_t i) const { return m_edges[i]; }
+  typename GT::halfedge_descriptor halfedge(std::size_t i) const
+  {
+    const auto h = halfedge_of_edge(m_edges[i >> 1], *m_mesh);
+    return (i & 1) == 0 ? h : opposite(h, *m_mesh);
+  }
+  typename GT::face_descriptor face(std::size_t i) const { return m_faces[i]; }
+
 private:
+  const Mesh* m_mesh;
+  std::vector<typename GT::vertex_descriptor> m_vertices;
+  std::vector<typename GT::edge_descriptor> m_edges;
+  std::vector<typename GT::face_descriptor> m_faces;
   typename boost::property_map<Mesh, CGAL::dynamic_vertex_property_t<std::size_t>>::const_type m_vertex;
   typename boost::property_map<Mesh, CGAL::dynamic_edge_property_t<std::size_t>>::const_type m_edge;
   typename boost::property_map<Mesh, CGAL::dynamic_halfedge_property_t<std::size_t>>::const_type m_halfedge;
@@ -77,59 +100,39 @@ class Mesh_numbering<CGAL::Surface_mesh<Point>>
 public:
   static constexpr bool dense = true;
 
+  using size_type = typename SM::size_type;
+
   explicit Mesh_numbering(const SM&) {}
   std::size_t operator()(typename SM::Vertex_index v) const { return v.idx(); }
   std::size_t operator()(typename SM::Edge_index e) const { return e.idx(); }
   std::size_t operator()(typename SM::Halfedge_index h) const { return h.idx(); }
   std::size_t operator()(typename SM::Face_index f) const { return f.idx(); }
+
+  typename SM::Vertex_index vertex(std::size_t i) const { return typename SM::Vertex_index(static_cast<size_type>(i)); }
+  typename SM::Edge_index edge(std::size_t i) const { return typename SM::Edge_index(static_cast<size_type>(i)); }
+  typename SM::Halfedge_index halfedge(std::size_t i) const
+  {
+    return typename SM::Halfedge_index(static_cast<size_type>(i));
+  }
+  typename SM::Face_index face(std::size_t i) const { return typename SM::Face_index(static_cast<size_type>(i)); }
 };
 
 /*
- * Calls f(d) for every element d of `range` (the vertices, edges or faces of
- * a mesh, `count` of them): with a dense numbering on index ranges, split into
- * chunks by `loop` (so f must only write what belongs to d), otherwise in
- * iteration order in this thread.
+ * Calls f(i) for every ordinal i in [0, count): with a dense numbering (a
+ * Surface_mesh) in parallel chunks by `loop`, so f must only write what
+ * belongs to i; otherwise in order, in this thread.
  */
-template <class Numbering, class Range, class Loop, class F>
-void for_each_element(const Numbering&, const Range& range, std::size_t count, const Loop& loop, const F& f)
+template <class Numbering, class Loop, class F>
+void for_each_ordinal(const Numbering&, std::size_t count, const Loop& loop, const F& f)
 {
-  if constexpr(Numbering::dense) {
-    using Descriptor = std::decay_t<decltype(*range.begin())>;
-    using Size = decltype(std::declval<Descriptor>().idx());
-    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-        f(Descriptor(static_cast<Size>(i)));
-    });
-  } else {
-    (void)count;
-    (void)loop;
-    for(const auto& d : range)
-      f(d);
-  }
-}
-
-/*
- * The same, the range made by `make_range()` only when the numbering is not
- * dense: on a Surface_mesh the loop then reads nothing of the mesh but the
- * elements it visits (not the element counts), so it may run while the
- * mesh's arrays grow within their capacity.
- */
-template <class Numbering, class MakeRange, class Loop, class F>
-void for_each_element_of(const Numbering& number, const MakeRange& make_range, std::size_t count, const Loop& loop,
-                         const F& f)
-{
-  if constexpr(Numbering::dense) {
-    using Range = decltype(make_range());
-    using Descriptor = std::decay_t<decltype(*std::declval<const Range&>().begin())>;
-    using Size = decltype(std::declval<Descriptor>().idx());
-    (void)number;
-    loop.for_range(count, 2048, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-        f(Descriptor(static_cast<Size>(i)));
-    });
-  } else {
-    for_each_element(number, make_range(), count, loop, f);
-  }
+  const auto run = [&](std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+      f(i);
+  };
+  if constexpr(Numbering::dense)
+    loop.for_range(count, 2048, run);
+  else
+    run(0, count);
 }
 
 } // namespace internal

@@ -3,7 +3,7 @@
 #ifndef CGAL_SUBDIV_INTERNAL_PARALLEL_H
 #define CGAL_SUBDIV_INTERNAL_PARALLEL_H
 
-#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Subdiv/parameters.h>
 
 #include <cstddef>
 #include <memory>
@@ -169,10 +169,6 @@ private:
 #endif
 };
 
-/// the tag of the named parameter `threads` (see `CGAL::Subdiv::threads()`)
-struct threads_t
-{};
-
 template <class NamedParameters>
 Parallel_loop parallel_loop(const NamedParameters& np)
 {
@@ -180,24 +176,6 @@ Parallel_loop parallel_loop(const NamedParameters& np)
 }
 
 } // namespace internal
-
-/*!
- * \ingroup PkgSubdivFunctions
- * named parameter of `subdivide()`, the scheme functions and
- * `make_stencil_table()`: the number of threads of the fast paths.
- * 1 (the default) runs in the calling thread; 0 lets TBB choose (all cores,
- * or what a `tbb::global_control` allows); n > 1 uses at most n threads. Without TBB (`SUBDIV_WITH_TBB=OFF`, or a build that does not
- * define `CGAL_LINKED_WITH_TBB`) everything runs in the calling thread. The
- * results do not depend on the number of threads, bit for bit.
- * `np` lets it join other named parameters:
- * `threads(2, CGAL::parameters::number_of_iterations(3))`.
- */
-template <class NamedParameters = CGAL::parameters::Default_named_parameters>
-CGAL::Named_function_parameters<int, internal::threads_t, NamedParameters> threads(
-  int n, const NamedParameters& np = CGAL::parameters::default_values())
-{
-  return {n, np};
-}
 
 } // namespace Subdiv
 } // namespace CGAL

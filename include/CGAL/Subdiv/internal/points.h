@@ -22,6 +22,25 @@ using Point_FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
 template <class Point>
 using Point_vector = decltype(std::declval<Point>() - CGAL::ORIGIN);
 
+// whether T has `T - ORIGIN` (a point of a CGAL kernel)
+template <class T, class = void>
+struct Is_point : std::false_type
+{};
+template <class T>
+struct Is_point<T, std::void_t<decltype(std::declval<const T&>() - CGAL::ORIGIN)>> : std::true_type
+{};
+
+// whether T is a 3D point with double coordinates (Simple_cartesian<double>,
+// Epick): the fast paths sum its coordinates in three doubles
+template <class T, class = void>
+struct Is_double_point_3 : std::false_type
+{};
+template <class T>
+struct Is_double_point_3<T, std::void_t<typename CGAL::Kernel_traits<T>::Kernel::Point_3>>
+  : std::bool_constant<std::is_same<typename CGAL::Kernel_traits<T>::Kernel::Point_3, T>::value &&
+                       std::is_same<typename CGAL::Kernel_traits<T>::Kernel::FT, double>::value>
+{};
+
 // Coordinates of floating-point kernels can be NaN or infinite; exact ones cannot.
 template <class FT>
 bool is_finite_number(const FT& x)

@@ -43,6 +43,8 @@ public:
   }
 
   const std::vector<Term>& terms() const { return m_terms; }
+  typename std::vector<Term>::const_iterator begin() const { return m_terms.begin(); }
+  typename std::vector<Term>::const_iterator end() const { return m_terms.end(); }
   std::size_t size() const { return m_terms.size(); }
   bool empty() const { return m_terms.empty(); }
   void clear() { m_terms.clear(); }

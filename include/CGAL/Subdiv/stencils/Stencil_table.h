@@ -8,6 +8,8 @@
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/Raw_array.h>
 #include <CGAL/Subdiv/internal/parallel.h>
+#include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/stencils/Row_builder.h>
 
 #include <array>
 #include <cstddef>
@@ -20,22 +22,6 @@
 namespace CGAL {
 namespace Subdiv {
 namespace internal {
-
-template <class T, class = void>
-struct Is_point : std::false_type
-{};
-template <class T>
-struct Is_point<T, std::void_t<decltype(std::declval<const T&>() - CGAL::ORIGIN)>> : std::true_type
-{};
-
-template <class T, class = void>
-struct Is_double_point_3 : std::false_type
-{};
-template <class T>
-struct Is_double_point_3<T, std::void_t<typename CGAL::Kernel_traits<T>::Kernel::Point_3>>
-  : std::bool_constant<std::is_same<typename CGAL::Kernel_traits<T>::Kernel::Point_3, T>::value &&
-                       std::is_same<typename CGAL::Kernel_traits<T>::Kernel::FT, double>::value>
-{};
 
 struct Stencil_table_access;
 
@@ -84,8 +70,8 @@ public:
   void add_stencil(const Terms& terms)
   {
     for(const auto& term : terms) {
-      internal::require(static_cast<std::size_t>(term.first) < m_sources,
-                        "stencil source " + std::to_string(term.first) + " out of range");
+      if(static_cast<std::size_t>(term.first) >= m_sources) // the message is made only on failure
+        throw Bad_input("stencil source " + std::to_string(term.first) + " out of range");
       m_indices.push_back(static_cast<Index>(term.first));
       m_weights.push_back(term.second);
     }
@@ -112,6 +98,33 @@ public:
     return m_ends.size() * sizeof(std::size_t) + m_indices.size() * sizeof(Index) + m_weights.size() * sizeof(FT);
   }
 
+  /// the raw rows: the terms of stencil i are [stencil_begin(i), stencil_end(i))
+  /// of these arrays
+  const Index* source_data() const { return m_indices.data(); }
+  const FT* weight_data() const { return m_weights.data(); }
+
+  /// the number of terms in the rows that `row` (a range of (stencil, weight))
+  /// combines: room enough for their composition
+  template <class Terms>
+  std::size_t terms_under(const Terms& row) const
+  {
+    std::size_t most = 0;
+    for(const auto& term : row)
+      most += stencil_end(term.first) - stencil_begin(term.first);
+    return most;
+  }
+
+  /// adds to `builder` the composition of `row` (a range of (stencil, weight))
+  /// with this table: sum_k w_k * stencil k
+  template <class Terms>
+  void compose_into(internal::Row_builder<FT>& builder, const Terms& row) const
+  {
+    for(const auto& term : row) {
+      const std::size_t k = static_cast<std::size_t>(term.first);
+      builder.add_row(m_indices.data(), m_weights.data(), stencil_begin(k), stencil_end(k), term.second);
+    }
+  }
+
   /// the table of `finer` applied after this one: row i of the result is
   /// sum_k finer(i, k) * row k of this table
   Stencil_table then(const Stencil_table& finer) const
@@ -121,29 +134,17 @@ public:
                         std::to_string(number_of_stencils()) + " stencils");
     Stencil_table result(m_sources);
     result.reserve(finer.number_of_stencils(), finer.number_of_terms() * 4);
-    std::vector<FT> sum(m_sources, FT(0));
-    std::vector<char> touched(m_sources, 0);
-    std::vector<Index> order;
+    internal::Row_builder<FT> builder;
+    std::vector<std::pair<Index, FT>> row;
     for(std::size_t i = 0; i < finer.number_of_stencils(); ++i) {
-      order.clear();
-      for(std::size_t t = finer.stencil_begin(i); t < finer.stencil_end(i); ++t) {
-        const FT& w = finer.weight(t);
-        const std::size_t k = finer.source(t);
-        for(std::size_t u = stencil_begin(k); u < stencil_end(k); ++u) {
-          const Index s = m_indices[u];
-          if(!touched[s]) {
-            touched[s] = 1;
-            order.push_back(s);
-            sum[s] = w * m_weights[u];
-          } else {
-            sum[s] += w * m_weights[u];
-          }
-        }
-      }
-      for(Index s : order) {
-        result.m_indices.push_back(s);
-        result.m_weights.push_back(sum[s]);
-        touched[s] = 0;
+      row.clear();
+      for(std::size_t t = finer.stencil_begin(i); t < finer.stencil_end(i); ++t)
+        row.emplace_back(finer.source(t), finer.weight(t));
+      builder.start(m_sources, terms_under(row));
+      compose_into(builder, row);
+      for(std::size_t k = 0; k < builder.size(); ++k) {
+        result.m_indices.push_back(builder.source(k));
+        result.m_weights.push_back(builder.weight(k));
       }
       result.m_ends.push_back(result.m_indices.size());
     }

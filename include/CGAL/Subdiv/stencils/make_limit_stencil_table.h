@@ -40,6 +40,12 @@ struct Limit_stencil_tables
 
 namespace internal {
 
+template <class T>
+struct Non_deduced
+{
+  using type = T;
+};
+
 using Sparse_row = std::vector<std::pair<std::uint32_t, double>>;
 
 // adds w * row to `sum` (merging repeated sources, first-appearance order)
@@ -116,11 +122,10 @@ void limit_rows(const Evaluator& evaluator, const Mesh& mesh, const std::vector<
   // descendant of vertex j is vertex j
   Mesh finer = mesh;
   const auto mask = evaluator.template mask<Mesh, double>();
-  const Host_of<std::decay_t<decltype(mask)>> host(finer);
-  const Stencil_table<double> level =
-    compose_level<double>(host, mask, Mesh_numbering<Mesh>(finer), static_cast<const Stencil_table<double>*>(nullptr),
-                          num_vertices(finer), Parallel_loop(1));
-  refine_topology(host, finer, get(CGAL::vertex_point, finer), Parallel_loop(1));
+  Composed_level<double> composed{nullptr, num_vertices(finer)};
+  const auto finer_points = get(CGAL::vertex_point, finer);
+  refine_level(finer, mask, No_points<decltype(finer_points)>{finer_points}, Parallel_loop(1), composed);
+  const Stencil_table<double>& level = composed.table;
   std::vector<std::uint32_t> descendants;
   for(const std::size_t k : pending)
     descendants.push_back(targets[k]);
@@ -182,8 +187,9 @@ Limit_stencil_tables make_limit_stencil_tables(
   static_assert(std::is_same<internal::Mesh_FT<PolygonMesh>, double>::value,
                 "limit stencil tables: a mesh with double coordinates");
   PolygonMesh refined;
-  const Stencil_table<double> table =
-    make_stencil_table(mesh, evaluator.template mask<PolygonMesh, double>(), levels, &refined, np);
+  const Stencil_table<double> table = internal::stencil_table_of(mesh, evaluator.template mask<PolygonMesh, double>(),
+                                                                 get_const_property_map(CGAL::vertex_point, mesh),
+                                                                 levels, &refined, internal::parallel_loop(np));
   // the analysis' masks need a mesh the scheme applies to, as project_to_limit() checks
   internal::check_mesh(refined, get(CGAL::vertex_point, refined), evaluator.template mask<PolygonMesh, double>().name(),
                        Host::required_face_size);
