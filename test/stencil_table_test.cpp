@@ -2,7 +2,7 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
-#include <CGAL/Subdiv/stencils/make_limit_stencil_table.h>
+#include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -191,12 +191,13 @@ template <template <class, class> class MaskTemplate>
 void expect_limit_tables_equal_subdivide_and_project(const Double_mesh& coarse, int levels)
 {
   Double_mesh refined;
-  const auto tables = S::make_limit_stencil_tables(coarse, levels, S::make_limit_evaluator<MaskTemplate>(), &refined);
+  const auto tables = S::make_limit_stencil_tables(coarse, MaskTemplate<Double_mesh, double>(),
+                                                   S::parameters::number_of_iterations(levels).refined_mesh(refined));
   Double_mesh reference = coarse;
   S::subdivide(reference, MaskTemplate<Double_mesh, double>(), CGAL::parameters::number_of_iterations(levels));
   auto normals = reference.add_property_map<Double_mesh::Vertex_index, KD::Vector_3>("v:n").first;
-  S::limit_normals<MaskTemplate>(reference, normals);
-  S::project_to_limit<MaskTemplate>(reference);
+  S::limit_normals(reference, MaskTemplate<Double_mesh, double>(), normals);
+  S::project_to_limit(reference, MaskTemplate<Double_mesh, double>());
   const std::vector<KD::Point_3> control(coarse.points().begin(), coarse.points().end());
   std::vector<KD::Point_3> limit;
   tables.position.apply(control, limit);
@@ -224,22 +225,20 @@ void expect_limit_tables_equal_subdivide_and_project(const Double_mesh& coarse, 
   EXPECT_GT(with_tangents, reference.number_of_vertices() / 2);
 }
 
-template <class M, class F>
-using Loop_warren_mask = S::Loop_mask<M, F, S::Warren_beta>;
-
 } // namespace
 
 TEST(Stencil_table, limit_tables_give_subdivide_then_project_to_limit)
 {
   for(int levels = 0; levels <= 2; ++levels) {
     expect_limit_tables_equal_subdivide_and_project<S::Loop_mask>(bumpy_grid(true), levels);
-    expect_limit_tables_equal_subdivide_and_project<Loop_warren_mask>(bumpy_grid(true), levels);
+    expect_limit_tables_equal_subdivide_and_project<S::Loop_warren_mask>(bumpy_grid(true), levels);
     expect_limit_tables_equal_subdivide_and_project<S::Catmull_clark_mask>(bumpy_grid(false), levels);
     expect_limit_tables_equal_subdivide_and_project<S::Catmull_clark_mask>(bumpy_grid(true), levels);
   }
   // the shorthand: positions only
   const Double_mesh coarse = bumpy_grid(true);
-  const auto table = S::make_limit_stencil_table<S::Loop_mask>(coarse, 1);
+  const auto table =
+    S::make_limit_stencil_table(coarse, S::Loop_mask<Double_mesh>(), S::parameters::number_of_iterations(1));
   EXPECT_EQ(table.number_of_sources(), coarse.number_of_vertices());
   for(std::size_t i = 0; i < table.number_of_stencils(); ++i) {
     double sum = 0;

@@ -1,7 +1,7 @@
 // Eigen-analysis of the surface schemes from their own masks (issue 4):
 // exact local matrices, spectra, closed forms, verdicts, limit masks checked
 // by refinement.
-#include <CGAL/Subdiv/analysis/surface_analysis.h>
+#include <CGAL/Subdiv/analysis.h>
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
@@ -27,10 +27,22 @@ using Warren_loop = CGAL::Subdiv::Loop_mask<Mesh, N, CGAL::Subdiv::Warren_beta>;
 
 const double pi = 3.14159265358979323846;
 
+// the local matrix of Mask<Analysis_mesh, Exact_rational> at valence n (a border vertex with n faces if `border`)
+template <template <class, class> class Mask>
+CGAL::Subdiv::Local_subdivision_matrix<CGAL::Exact_rational> local_matrix(int n, bool border = false, int rings = 0)
+{
+  namespace S = CGAL::Subdiv;
+  return S::local_subdivision_matrix(Mask<S::Analysis_mesh, CGAL::Exact_rational>(),
+                                     S::Configuration(n, border ? S::Vertex_kind::border : S::Vertex_kind::interior),
+                                     S::parameters::rings(rings));
+}
+
 template <template <class, class> class Mask>
 Surface_analysis<FT> analyse(int n, bool boundary = false)
 {
-  return CGAL::Subdiv::analyse_surface_scheme<Mask>(n, boundary);
+  namespace S = CGAL::Subdiv;
+  return S::analyse_surface_scheme(Mask<S::Analysis_mesh, CGAL::Exact_rational>(),
+                                   S::Configuration(n, boundary ? S::Vertex_kind::border : S::Vertex_kind::interior));
 }
 
 std::string describe(const Surface_analysis<FT>& a)
@@ -75,7 +87,7 @@ TEST(SurfaceAnalysisLoop, exact_matrix_is_made_of_the_mask_weights)
 {
   for(int n = 3; n <= 8; ++n) {
     SCOPED_TRACE("valence " + std::to_string(n));
-    const auto local = CGAL::Subdiv::local_subdivision_matrix<Warren_loop>(n);
+    const auto local = local_matrix<Warren_loop>(n);
     ASSERT_TRUE(local.invariant);
     ASSERT_EQ(local.rings, 1);
     ASSERT_EQ(local.S.rows(), n + 1);
@@ -328,7 +340,7 @@ TEST(SurfaceAnalysisDooSabin, border_face_neighbourhood_is_the_real_layout)
     }
     // the neighbourhood of 1 to 4 rings refines into itself
     for(int rings = 1; rings <= 4; ++rings)
-      EXPECT_TRUE(CGAL::Subdiv::local_subdivision_matrix<CGAL::Subdiv::Doo_sabin_mask>(k, true, rings).invariant);
+      EXPECT_TRUE(local_matrix<CGAL::Subdiv::Doo_sabin_mask>(k, true, rings).invariant);
   }
 }
 
@@ -504,7 +516,7 @@ TEST(SurfaceAnalysisSqrt3, border_pair_rests_then_refines)
       EXPECT_FALSE(host.refines_border()) << "k = " << k << ", rings = " << rings;
     }
   for(int k = 1; k <= 8; ++k) {
-    const auto local = CGAL::Subdiv::local_subdivision_matrix<CGAL::Subdiv::Sqrt3_mask>(k, true);
+    const auto local = local_matrix<CGAL::Subdiv::Sqrt3_mask>(k, true);
     EXPECT_TRUE(local.invariant);
     EXPECT_EQ(local.rings, 1);
     EXPECT_EQ(local.S.rows(), k + 2);

@@ -1,6 +1,6 @@
 // Limit positions, limit normals and displacement (issue 4, limit part): the
 // masks come from the analysis, mapped onto the mesh by the same labelling walk.
-#include <CGAL/Subdiv/analysis/limit.h>
+#include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
@@ -34,8 +34,8 @@ using Exact_mesh = CGAL::Surface_mesh<QK::Point_3>;
 using Q = CGAL::Exact_rational;
 using V = Mesh::Vertex_index;
 
-template <class M, class N>
-using Warren_loop = SD::Loop_mask<M, N, SD::Warren_beta>;
+template <class M, class N = SD::internal::Mesh_FT<M>>
+using Warren_loop = SD::Loop_warren_mask<M, N>;
 
 const double pi = 3.14159265358979323846;
 
@@ -146,7 +146,8 @@ std::vector<K::Vector_3> normals_of(const Mesh& mesh,
 template <template <class, class> class M>
 std::vector<K::Vector_3> limit_normals_of(const Mesh& mesh)
 {
-  return normals_of(mesh, [](const Mesh& m, Mesh::Property_map<V, K::Vector_3> map) { SD::limit_normals<M>(m, map); });
+  return normals_of(
+    mesh, [](const Mesh& m, Mesh::Property_map<V, K::Vector_3> map) { SD::limit_normals(m, M<Mesh, double>(), map); });
 }
 
 // ------------------------------------------------------------------ masks
@@ -156,7 +157,7 @@ std::vector<K::Vector_3> limit_normals_of(const Mesh& mesh)
 // (checked inside compute_limit_masks, which throws otherwise)
 TEST(LimitMasks, come_from_the_analysis)
 {
-  const auto warren = SD::make_limit_evaluator<Warren_loop>();
+  const auto warren = SD::Limit_evaluator<Warren_loop<Mesh, double>>();
   for(int n = 3; n <= 10; ++n) {
     const SD::Limit_masks& m = warren.masks(n, false);
     EXPECT_EQ(m.rings, 1);
@@ -167,7 +168,7 @@ TEST(LimitMasks, come_from_the_analysis)
       EXPECT_EQ(m.limit[static_cast<std::size_t>(i)], (Q(1) - centre) / Q(n));
     EXPECT_TRUE(m.tangents);
   }
-  const auto cc = SD::make_limit_evaluator<SD::Catmull_clark_mask>();
+  const auto cc = SD::Limit_evaluator<SD::Catmull_clark_mask<Mesh, double>>();
   for(int n = 3; n <= 8; ++n) {
     const SD::Limit_masks& m = cc.masks(n, false);
     const Q d(n * (n + 5));
@@ -185,7 +186,7 @@ TEST(LimitMasks, come_from_the_analysis)
     EXPECT_EQ(l.limit[static_cast<std::size_t>(k + 1)], Q(1) / Q(6));
   }
   // interpolating schemes: the limit mask is the centre's unit vector
-  const auto butterfly = SD::make_limit_evaluator<SD::Butterfly_mask>();
+  const auto butterfly = SD::Limit_evaluator<SD::Butterfly_mask<Mesh, double>>();
   for(int n : {4, 5, 6, 7}) {
     const SD::Limit_masks& m = butterfly.masks(n, false);
     EXPECT_EQ(m.rings, 2);
@@ -208,7 +209,7 @@ TEST(ProjectToLimit, loop_agrees_with_deep_refinement)
   Mesh mesh = icosahedron();
   SD::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Loop_mask>(limit);
+  SD::project_to_limit(limit, SD::Loop_mask<decltype(limit)>());
   const std::size_t old = mesh.number_of_vertices();
   const double edge = distance(mesh.point(V(0)), mesh.point(mesh.source(mesh.halfedge(V(0)))));
   Mesh deep = mesh;
@@ -226,7 +227,7 @@ TEST(ProjectToLimit, catmull_clark_agrees_with_deep_refinement)
   Mesh mesh = cube();
   SD::catmull_clark_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  SD::project_to_limit(limit, SD::Catmull_clark_mask<decltype(limit)>());
   const std::size_t old = mesh.number_of_vertices();
   Mesh deep = mesh;
   // valence 3: lambda_1 = (5 + c + cos(pi/3) sqrt(18 + 2c)) / 16 with c = cos(2 pi / 3)
@@ -245,7 +246,7 @@ TEST(ProjectToLimit, catmull_clark_agrees_with_deep_refinement)
 template <template <class, class> class M, class Refine>
 void expect_invariant_under_refinement(Exact_mesh mesh, const Refine& refine)
 {
-  const auto evaluator = SD::make_limit_evaluator<M>();
+  const auto evaluator = SD::Limit_evaluator<M<Mesh, double>>();
   refine(mesh);
   Exact_mesh a = mesh;
   evaluator.project_to_limit(a);
@@ -282,7 +283,7 @@ TEST(ProjectToLimit, border_vertices_are_on_the_cubic_bspline)
   }
   SD::loop_warren_subdivision(mesh);
   Exact_mesh limit = mesh;
-  SD::project_to_limit<Warren_loop>(limit);
+  SD::project_to_limit(limit, Warren_loop<decltype(limit)>());
   int border = 0;
   for(auto v : mesh.vertices()) {
     const SD::Vertex_view<Exact_mesh> view(mesh, v);
@@ -312,15 +313,15 @@ TEST(ProjectToLimit, interpolating_schemes_keep_the_points)
     SD::butterfly_subdivision(a);
     SD::modified_butterfly_subdivision(b);
     Mesh pa = a, pb = b;
-    SD::project_to_limit<SD::Butterfly_mask>(pa);
-    SD::project_to_limit<SD::Modified_butterfly_mask>(pb);
+    SD::project_to_limit(pa, SD::Butterfly_mask<decltype(pa)>());
+    SD::project_to_limit(pb, SD::Modified_butterfly_mask<decltype(pb)>());
     EXPECT_EQ(points_of(pa), points_of(a));
     EXPECT_EQ(points_of(pb), points_of(b));
   }
   Mesh c = closed;
   SD::interpolating_sqrt3_subdivision(c, CGAL::parameters::number_of_iterations(2));
   Mesh pc = c;
-  SD::project_to_limit<SD::Interpolating_sqrt3_mask>(pc);
+  SD::project_to_limit(pc, SD::Interpolating_sqrt3_mask<decltype(pc)>());
   EXPECT_EQ(points_of(pc), points_of(c));
 }
 
@@ -329,7 +330,7 @@ TEST(ProjectToLimit, sqrt3_agrees_with_deep_refinement)
   Mesh mesh = icosahedron();
   SD::sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Sqrt3_mask>(limit);
+  SD::project_to_limit(limit, SD::Sqrt3_mask<decltype(limit)>());
   Mesh deep = mesh;
   SD::sqrt3_subdivision(deep, CGAL::parameters::number_of_iterations(8));
   double worst = 0;
@@ -353,19 +354,19 @@ TEST(ProjectToLimit, sqrt3_border_vertices_exactly_invariant)
   for(auto v : mesh.vertices()) // not planar
     mesh.point(v) = QK::Point_3(mesh.point(v).x(), mesh.point(v).y(), Q(int(v.idx() % 4)) / Q(3));
   Exact_mesh a = mesh, b = mesh, c = mesh, d = mesh;
-  SD::project_to_limit<SD::Sqrt3_mask>(a);
+  SD::project_to_limit(a, SD::Sqrt3_mask<decltype(a)>());
   one_step(b);
-  SD::project_to_limit<SD::Sqrt3_mask>(b);
+  SD::project_to_limit(b, SD::Sqrt3_mask<decltype(b)>());
   one_step(c);
   one_step(c);
-  SD::project_to_limit<SD::Sqrt3_mask>(c);
+  SD::project_to_limit(c, SD::Sqrt3_mask<decltype(c)>());
   // three steps: the border is refined next, and most border vertices have
   // the analysed neighbourhood (evaluated one step later all the same)
   one_step(d);
   one_step(d);
   one_step(d);
   ASSERT_TRUE(SD::Sqrt3_split<Exact_mesh>(d).refines_border());
-  SD::project_to_limit<SD::Sqrt3_mask>(d);
+  SD::project_to_limit(d, SD::Sqrt3_mask<decltype(d)>());
   for(auto v : mesh.vertices()) {
     EXPECT_EQ(a.point(v), b.point(v)) << "vertex " << v.idx();
     EXPECT_EQ(a.point(v), c.point(v)) << "vertex " << v.idx();
@@ -375,7 +376,7 @@ TEST(ProjectToLimit, sqrt3_border_vertices_exactly_invariant)
   Mesh open = grid(3, 2, true);
   SD::interpolating_sqrt3_subdivision(open);
   Mesh kept = open;
-  SD::project_to_limit<SD::Interpolating_sqrt3_mask>(kept);
+  SD::project_to_limit(kept, SD::Interpolating_sqrt3_mask<decltype(kept)>());
   EXPECT_EQ(points_of(kept), points_of(open));
 }
 
@@ -387,7 +388,7 @@ TEST(ProjectToLimit, sqrt3_border_agrees_with_deep_refinement)
   for(V v : mesh.vertices())
     mesh.point(v) = K::Point_3(mesh.point(v).x(), mesh.point(v).y(), std::sin(double(v.idx())));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Sqrt3_mask>(limit);
+  SD::project_to_limit(limit, SD::Sqrt3_mask<decltype(limit)>());
   Mesh deep = mesh;
   SD::sqrt3_subdivision(deep, CGAL::parameters::number_of_iterations(8));
   double worst = 0;
@@ -445,7 +446,7 @@ TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
       }
     }
     Exact_mesh limit = mesh;
-    SD::project_to_limit<SD::Doo_sabin_mask>(limit);
+    SD::project_to_limit(limit, SD::Doo_sabin_mask<decltype(limit)>());
     std::size_t interior_edges = 0;
     for(auto e : mesh.edges())
       interior_edges += mesh.is_border(e) ? 0 : 1;
@@ -520,7 +521,7 @@ TEST(ProjectToLimit, doo_sabin_vertex_faces_converge_to_the_limit)
 // corner, label 3 of the corner face), checked exactly when computed
 TEST(ProjectToLimit, doo_sabin_border_masks_are_the_border_face_analysis)
 {
-  const SD::Limit_evaluator<SD::Doo_sabin_mask> evaluator;
+  const SD::Limit_evaluator<SD::Doo_sabin_mask<Mesh>> evaluator;
   for(int k = 1; k <= 8; ++k) {
     SCOPED_TRACE("k = " + std::to_string(k));
     const SD::Limit_masks& masks = evaluator.masks(k, true);
@@ -567,7 +568,7 @@ TEST(LimitNormals, sphere_like_mesh)
   Mesh mesh = icosahedron();
   SD::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Loop_mask>(limit);
+  SD::project_to_limit(limit, SD::Loop_mask<decltype(limit)>());
   const std::vector<K::Vector_3> normals = limit_normals_of<SD::Loop_mask>(mesh);
   for(V v : mesh.vertices()) {
     const K::Vector_3 radial = limit.point(v) - CGAL::ORIGIN;
@@ -584,7 +585,7 @@ TEST(LimitNormals, sphere_like_mesh)
   // the limit points around the old vertex, area-weighted
   Mesh deep = mesh;
   SD::loop_subdivision(deep, CGAL::parameters::number_of_iterations(4));
-  SD::project_to_limit<SD::Loop_mask>(deep);
+  SD::project_to_limit(deep, SD::Loop_mask<decltype(deep)>());
   double worst = 0;
   for(V v : mesh.vertices()) {
     K::Vector_3 sum(0, 0, 0);
@@ -604,7 +605,7 @@ TEST(LimitNormals, catmull_clark_cube_normals_point_outward)
   Mesh mesh = cube();
   SD::catmull_clark_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
   Mesh limit = mesh;
-  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  SD::project_to_limit(limit, SD::Catmull_clark_mask<decltype(limit)>());
   const std::vector<K::Vector_3> normals = limit_normals_of<SD::Catmull_clark_mask>(mesh);
   const K::Point_3 centre(0.5, 0.5, 0.5);
   for(V v : mesh.vertices()) {
@@ -634,7 +635,7 @@ TEST(LimitNormals, parallel_tangents_fall_back_to_face_normals)
     const K::Vector_3 offset = mesh.point(u) - mesh.point(centre);
     mesh.point(u) = mesh.point(centre) + d * (offset.x() + 0.3 * offset.y());
   }
-  const auto evaluator = SD::make_limit_evaluator<SD::Loop_mask>();
+  const auto evaluator = SD::Limit_evaluator<SD::Loop_mask<Mesh, double>>();
   const auto results =
     evaluator.evaluate(mesh, mesh.points(), static_cast<const SD::internal::No_heights*>(nullptr), "test");
   const auto& r = results[centre.idx()];
@@ -670,10 +671,10 @@ TEST(Displace, zero_height_is_the_limit_surface)
 {
   Mesh mesh = icosahedron();
   Mesh displaced = mesh, limit = mesh;
-  SD::Limit_evaluator<SD::Loop_mask>().displace(
+  SD::Limit_evaluator<SD::Loop_mask<Mesh>>().displace(
     displaced, [](const K::Point_3&) { return 0.0; }, CGAL::parameters::number_of_iterations(2));
   SD::loop_subdivision(limit, CGAL::parameters::number_of_iterations(2));
-  SD::project_to_limit<SD::Loop_mask>(limit);
+  SD::project_to_limit(limit, SD::Loop_mask<decltype(limit)>());
   EXPECT_EQ(points_of(displaced), points_of(limit));
 }
 
@@ -683,10 +684,10 @@ TEST(Displace, constant_height_moves_along_the_unit_normal)
   SD::loop_subdivision(mesh);
   Mesh limit = mesh;
   auto normals = limit.add_property_map<V, K::Vector_3>("v:normal", K::Vector_3(0, 0, 0)).first;
-  SD::project_to_limit<SD::Loop_mask>(limit, CGAL::parameters::vertex_normal_map(normals));
+  SD::project_to_limit(limit, SD::Loop_mask<decltype(limit)>(), CGAL::parameters::vertex_normal_map(normals));
   Mesh displaced = mesh;
   auto heights = displaced.add_property_map<V, double>("v:height", 0.25).first;
-  SD::Limit_evaluator<SD::Loop_mask>().displace(displaced, heights);
+  SD::Limit_evaluator<SD::Loop_mask<Mesh>>().displace(displaced, heights);
   for(V v : mesh.vertices()) {
     EXPECT_NEAR(distance(displaced.point(v), limit.point(v)), 0.25, 1e-14);
     const K::Vector_3 move = displaced.point(v) - limit.point(v);
@@ -708,7 +709,7 @@ TEST(Displace, carried_heights_reproduce_a_linear_function)
   auto heights = mesh.add_property_map<Exact_mesh::Vertex_index, Q>("v:height", Q(0)).first;
   for(auto v : mesh.vertices())
     heights[v] = linear(mesh.point(v));
-  const auto evaluator = SD::make_limit_evaluator<Warren_loop>();
+  const auto evaluator = SD::Limit_evaluator<Warren_loop<Mesh, double>>();
   SD::Carried_data<Exact_mesh> data;
   data.vertex_map(heights);
   SD::subdivide(mesh, Warren_loop<Exact_mesh, Q>(), SD::parameters::number_of_iterations(2).carried_data(data));
@@ -735,12 +736,12 @@ TEST(Displace, callable_height_is_evaluated_at_the_limit_point)
   Mesh mesh = cube();
   Mesh displaced = mesh;
   auto normals = displaced.add_property_map<V, K::Vector_3>("v:normal", K::Vector_3(0, 0, 0)).first;
-  SD::Limit_evaluator<SD::Catmull_clark_mask>().displace(
+  SD::Limit_evaluator<SD::Catmull_clark_mask<Mesh>>().displace(
     displaced, [](const K::Point_3& p) { return p.z(); },
     CGAL::parameters::number_of_iterations(2).vertex_normal_map(normals));
   Mesh limit = mesh;
   SD::catmull_clark_subdivision(limit, CGAL::parameters::number_of_iterations(2));
-  SD::project_to_limit<SD::Catmull_clark_mask>(limit);
+  SD::project_to_limit(limit, SD::Catmull_clark_mask<decltype(limit)>());
   for(V v : limit.vertices()) {
     const K::Vector_3 expected = normals[v] * limit.point(v).z();
     EXPECT_NEAR(std::sqrt((displaced.point(v) - limit.point(v) - expected).squared_length()), 0.0, 1e-14);
@@ -757,8 +758,8 @@ TEST(ProjectToLimit, epeck)
   SD::loop_subdivision(mesh);
   SD::loop_subdivision(reference);
   auto normals = mesh.add_property_map<Epeck_mesh::Vertex_index, EK::Vector_3>("v:normal").first;
-  SD::project_to_limit<SD::Loop_mask>(mesh, CGAL::parameters::vertex_normal_map(normals));
-  SD::project_to_limit<SD::Loop_mask>(reference);
+  SD::project_to_limit(mesh, SD::Loop_mask<decltype(mesh)>(), CGAL::parameters::vertex_normal_map(normals));
+  SD::project_to_limit(reference, SD::Loop_mask<decltype(reference)>());
   for(auto v : mesh.vertices()) {
     const auto& p = mesh.point(v);
     const auto& q = reference.point(Exact_mesh::Vertex_index(v.idx()));
@@ -773,12 +774,13 @@ TEST(LimitErrors, refusals_name_the_problem)
 {
   Mesh quads = cube();
   EXPECT_NE(testing_utils::bad_input_message([&] {
-              SD::project_to_limit<SD::Loop_mask>(quads);
+              SD::project_to_limit(quads, SD::Loop_mask<decltype(quads)>());
             }).find("needs a mesh whose faces all have 3 vertices"),
             std::string::npos);
   // Doo-Sabin at an interior vertex of valence 2 (two quads glued along their border): no vertex face
   Mesh pillow = mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}});
-  const std::string dual = testing_utils::bad_input_message([&] { SD::project_to_limit<SD::Doo_sabin_mask>(pillow); });
+  const std::string dual =
+    testing_utils::bad_input_message([&] { SD::project_to_limit(pillow, SD::Doo_sabin_mask<decltype(pillow)>()); });
   EXPECT_NE(dual.find("project_to_limit (Doo-Sabin): vertex 0: "), std::string::npos) << dual;
   EXPECT_EQ(points_of(pillow)[0], K::Point_3(0, 0, 0)); // unchanged
 }

@@ -4,14 +4,15 @@
 #define CGAL_SUBDIV_H
 
 /// \file Subdiv.h
-/// Convenience header: includes every public header of CGAL Subdiv.
+/// Convenience header, as CGAL/subdivision_method_3.h: the curve schemes, the
+/// surface schemes and `subdivide()`, and the stencil tables. The analysis
+/// (Eigen, exact rationals) is in <CGAL/Subdiv/analysis.h>, the limit
+/// positions and normals in <CGAL/Subdiv/limit.h>: a program that only
+/// refines does not compile them.
 
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/Subdiv/parameters.h>
 
-#include <CGAL/Subdiv/analysis/curve_analysis.h>
-#include <CGAL/Subdiv/analysis/limit.h>
-#include <CGAL/Subdiv/analysis/surface_analysis.h>
 #include <CGAL/Subdiv/curves/Bezier_scheme.h>
 #include <CGAL/Subdiv/curves/Chaikin_scheme.h>
 #include <CGAL/Subdiv/curves/Corner_cutting_scheme.h>
@@ -20,10 +21,10 @@
 #include <CGAL/Subdiv/curves/curve_mask.h>
 #include <CGAL/Subdiv/curves/refine_polyline.h>
 
-#include <CGAL/Subdiv/stencils/Stencil_table.h>
-#include <CGAL/Subdiv/stencils/make_limit_stencil_table.h>
-#include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
+
+#include <CGAL/Subdiv/stencils/Stencil_table.h>
+#include <CGAL/Subdiv/stencils/make_stencil_table.h>
 
 #endif // CGAL_SUBDIV_H

@@ -20,13 +20,13 @@ namespace {
 
 namespace S = CGAL::Subdiv;
 
-template <class Mesh, class FT>
-using Warren_loop_mask = S::Loop_mask<Mesh, FT, S::Warren_beta>;
-
-template <template <class, class> class Mask>
-Surface_summary run(const std::string& keyword, int valence, bool boundary, const S::Surface_analysis_options& options)
+template <class Mask>
+Surface_summary run(const std::string& keyword, const Mask& mask, int valence, bool boundary, bool characteristic_map,
+                    bool verify_limit)
 {
-  const S::Surface_analysis<Exact> a = S::analyse_surface_scheme<Mask, Exact>(valence, boundary, options);
+  const S::Configuration where(valence, boundary ? S::Vertex_kind::border : S::Vertex_kind::interior);
+  const S::Surface_analysis<Exact> a = S::analyse_surface_scheme<Exact>(
+    mask, where, S::parameters::characteristic_map(characteristic_map).verify_limit(verify_limit));
   Surface_summary s;
   s.scheme = keyword;
   s.name = a.scheme;
@@ -110,24 +110,25 @@ Surface_summary analyse_surface(const std::string& keyword, int valence, bool bo
     throw Input_error(what + " must be between " + std::to_string(low) + " and " +
                       std::to_string(max_analysed_valence) + ", got " + std::to_string(valence));
   }
-  S::Surface_analysis_options options;
-  options.characteristic_map = characteristic_map;
-  options.verify_limit = verify_limit;
+  using M = S::Analysis_mesh;
+  const auto analyse = [&](const auto& mask) {
+    return run(keyword, mask, valence, boundary, characteristic_map, verify_limit);
+  };
   if(keyword == "loop")
-    return run<S::Loop_mask>(keyword, valence, boundary, options);
+    return analyse(S::Loop_mask<M, Exact>());
   if(keyword == "loop-warren")
-    return run<Warren_loop_mask>(keyword, valence, boundary, options);
+    return analyse(S::Loop_warren_mask<M, Exact>());
   if(keyword == "catmull-clark")
-    return run<S::Catmull_clark_mask>(keyword, valence, boundary, options);
+    return analyse(S::Catmull_clark_mask<M, Exact>());
   if(keyword == "doo-sabin")
-    return run<S::Doo_sabin_mask>(keyword, valence, boundary, options);
+    return analyse(S::Doo_sabin_mask<M, Exact>());
   if(keyword == "sqrt3")
-    return run<S::Sqrt3_mask>(keyword, valence, boundary, options);
+    return analyse(S::Sqrt3_mask<M, Exact>());
   if(keyword == "butterfly")
-    return run<S::Butterfly_mask>(keyword, valence, boundary, options);
+    return analyse(S::Butterfly_mask<M, Exact>());
   if(keyword == "modified-butterfly")
-    return run<S::Modified_butterfly_mask>(keyword, valence, boundary, options);
-  return run<S::Interpolating_sqrt3_mask>(keyword, valence, boundary, options);
+    return analyse(S::Modified_butterfly_mask<M, Exact>());
+  return analyse(S::Interpolating_sqrt3_mask<M, Exact>());
 }
 
 } // namespace cgal_subdiv

@@ -6,7 +6,7 @@
 
 #include "numbers.h"
 
-#include <CGAL/Subdiv/analysis/limit.h>
+#include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
@@ -27,36 +27,33 @@ namespace {
 
 namespace SD = CGAL::Subdiv;
 
-template <class M, class N>
-using Warren_loop = SD::Loop_mask<M, N, SD::Warren_beta>;
-
 using Vertex = Surface::Vertex_index;
 
-// calls `f.template operator()<Mask>()` with the mask template of the scheme
+// calls `f(mask)` with the mask of the scheme
 template <class F>
 void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
 {
   const std::string& name = scheme.name;
   if(name == "loop")
-    f.template operator()<SD::Loop_mask>();
+    f(SD::Loop_mask<Surface>());
   else if(name == "loop-warren")
-    f.template operator()<Warren_loop>();
+    f(SD::Loop_warren_mask<Surface>());
   else if(name == "catmull-clark")
-    f.template operator()<SD::Catmull_clark_mask>();
+    f(SD::Catmull_clark_mask<Surface>());
   else if(name == "doo-sabin") // dual: the limit of each vertex's vertex face (doc/limit.md)
-    f.template operator()<SD::Doo_sabin_mask>();
+    f(SD::Doo_sabin_mask<Surface>());
   else if(name == "sqrt3")
-    f.template operator()<SD::Sqrt3_mask>();
+    f(SD::Sqrt3_mask<Surface>());
   else if(name == "butterfly")
-    f.template operator()<SD::Butterfly_mask>();
+    f(SD::Butterfly_mask<Surface>());
   else if(name == "modified-butterfly")
-    f.template operator()<SD::Modified_butterfly_mask>();
+    f(SD::Modified_butterfly_mask<Surface>());
   else if(name == "interpolating-sqrt3")
-    f.template operator()<SD::Interpolating_sqrt3_mask>();
+    f(SD::Interpolating_sqrt3_mask<Surface>());
   else if(name == "linear" && CGAL::is_triangle_mesh(mesh))
-    f.template operator()<SD::Linear_triangle_mask>();
+    f(SD::Linear_triangle_mask<Surface>());
   else if(name == "linear")
-    f.template operator()<SD::Linear_quad_mask>();
+    f(SD::Linear_quad_mask<Surface>());
   else
     throw std::logic_error("no limit masks for scheme '" + name + "'"); // every scheme has them
 }
@@ -64,10 +61,10 @@ void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
 struct Project
 {
   Surface& mesh;
-  template <template <class, class> class Mask>
-  void operator()() const
+  template <class Mask>
+  void operator()(const Mask& mask) const
   {
-    SD::project_to_limit<Mask>(mesh);
+    SD::project_to_limit(mesh, mask);
   }
 };
 
@@ -76,10 +73,10 @@ struct Displace
   Surface& mesh;
   int levels;
   Surface::Property_map<Vertex, double> heights;
-  template <template <class, class> class Mask>
-  void operator()() const
+  template <class Mask>
+  void operator()(const Mask& mask) const
   {
-    SD::Limit_evaluator<Mask>().displace(mesh, heights, CGAL::parameters::number_of_iterations(levels));
+    SD::displace(mesh, mask, heights, SD::parameters::number_of_iterations(levels));
   }
 };
 

@@ -2,7 +2,7 @@
 // Copyright (c) 2026 CGAL Subdiv contributors
 //
 // cgal-subdiv surface --limit and --displace: limit positions, limit normals
-// and displacement along them (CGAL/Subdiv/analysis/limit.h).
+// and displacement along them (CGAL/Subdiv/limit.h).
 #ifndef CGAL_SUBDIV_CLI_SURFACE_LIMIT_H
 #define CGAL_SUBDIV_CLI_SURFACE_LIMIT_H
 

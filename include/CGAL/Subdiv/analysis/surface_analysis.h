@@ -8,10 +8,13 @@
 /// from the schemes' own masks: spectrum, C1 conditions, characteristic map,
 /// limit and tangent masks, and a check of the limit mask by refinement.
 
+#include <CGAL/Subdiv/analysis/Analysis_status.h>
+#include <CGAL/Subdiv/analysis/Configuration.h>
 #include <CGAL/Subdiv/analysis/curve_analysis.h>     // sort_eigenvalues, to_double_matrix
 #include <CGAL/Subdiv/analysis/curve_local_matrix.h> // exact ranks, left fixed vector
 #include <CGAL/Subdiv/analysis/surface_neighbourhood.h>
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Fraction_traits.h>
@@ -61,10 +64,9 @@ inline std::string to_string(Characteristic_map_verdict verdict)
   }
 }
 
-/*!
- * \ingroup PkgSubdivAnalysis
- * What the analysis computes; see `Surface_analysis`.
- */
+namespace internal {
+
+// what the analysis computes, from its named parameters (`analyse_surface_scheme()`)
 struct Surface_analysis_options
 {
   /// test the characteristic map (the costliest part)
@@ -77,6 +79,8 @@ struct Surface_analysis_options
   unsigned seed = 20260;
 };
 
+} // namespace internal
+
 /*!
  * \ingroup PkgSubdivAnalysis
  * The analysis of a surface scheme at one vertex (or face) configuration,
@@ -88,6 +92,11 @@ struct Surface_analysis_options
 template <class FT>
 struct Surface_analysis
 {
+  /// whether every step ran (`no_convergence`: an eigen-solver failed, the
+  /// spectrum or the tangent masks are missing; `not_affine_invariant`: the
+  /// rows of the matrix do not sum to 1); the verdicts mean something only
+  /// with `success`
+  Analysis_status status = Analysis_status::success;
   std::string scheme; ///< `mask.name()`
   int valence = 0;    ///< valence n (border: number of faces k; dual: corners of the central face; dual at
                       ///< the border: faces k of the border vertex the central face was made from)
@@ -437,8 +446,8 @@ inline std::vector<int> rings_of_vertices(const Analysis_mesh& mesh, Analysis_ha
 // wide stencils, e.g. interpolating sqrt3, lose rings to the patch border
 // faster than the refinement adds them)
 template <class DoubleMask, class Result>
-bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const Surface_analysis_options& options,
-                                   int big)
+bool characteristic_map_with_rings(const DoubleMask& mask, Result& result,
+                                   const internal::Surface_analysis_options& options, int big)
 {
   using Traits = Host_of<DoubleMask>;
   const std::complex<double> lambda = result.subdominant, lambda2 = result.second_subdominant;
@@ -525,7 +534,8 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
   std::vector<int> rings;
   int outer = 0;
   for(int level = 1; level <= 8; ++level) {
-    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::analysis_steps == 2 ? 9 : 4) > options.max_faces && level > 2)
+    if(mesh.number_of_faces() * static_cast<std::size_t>(Traits::analysis_steps == 2 ? 9 : 4) > options.max_faces &&
+       level > 2)
       break;
     auto step = analysed_step(mesh, start, mask);
     std::vector<char> next_trusted(step.mesh.number_of_vertices(), 0);
@@ -563,7 +573,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result, const
  */
 template <class DoubleMask, class Result>
 void characteristic_map_and_extended_spectrum(const DoubleMask& mask, Result& result,
-                                              const Surface_analysis_options& options)
+                                              const internal::Surface_analysis_options& options)
 {
   for(int big = 2 * result.rings + 2; big <= 2 * result.rings + 8; big += 2)
     if(characteristic_map_with_rings(mask, result, options, big))
@@ -583,7 +593,7 @@ inline double distance(const Analysis_mesh::Point& p, const Analysis_mesh::Point
 
 template <class DoubleMask, class Result>
 void verify_limit(const DoubleMask& mask, Result& result, const std::vector<double>& limit_mask,
-                  const Surface_analysis_options& options)
+                  const internal::Surface_analysis_options& options)
 {
   using Traits = Host_of<DoubleMask>;
   const int rings = result.rings + 2;
@@ -641,10 +651,10 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
 
 /*!
  * \ingroup PkgSubdivAnalysis
- * analyses a surface scheme at an interior vertex of valence `valence`, or
- * (`boundary`) at a border vertex with `valence` faces, or, for a dual scheme
- * (`Dual_split`: Doo-Sabin), at an interior face with `valence` corners (or,
- * `boundary`, at the border face made from a border vertex with `valence`
+ * analyses a surface scheme at `where`: an interior vertex of valence
+ * `valence`, or a border vertex with `valence` faces, or, for a dual scheme
+ * (`Dual_split`: Doo-Sabin), an interior face with `valence` corners (or, at
+ * the border, the border face made from a border vertex with `valence`
  * faces, see below); all
  * other vertices of the neighbourhood are regular (see
  * `local_subdivision_matrix()`). As in [Reif 1995, "A unified approach to
@@ -717,27 +727,34 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
  * beside them, at every level): the patches are made by refinement, as real
  * meshes have them (`internal::border_face_patch`).
  *
- * \tparam MaskTemplate `MaskTemplate<Mesh, FT>` is a mask (`Loop_mask`,
- *         `Catmull_clark_mask`, `Doo_sabin_mask`, `Butterfly_mask`,
- *         `Modified_butterfly_mask`, `Sqrt3_mask`, ...; an alias template
- *         fixes other parameters, e.g. Warren's beta for Loop). It is
- *         instantiated with `Analysis_mesh` and FT (the matrix) and with
- *         `double` (characteristic map, verification).
  * \tparam FT exact field type of the matrix (default `CGAL::Exact_rational`)
- * \param args forwarded to both masks' constructors (a tension, a
- *         `Border_corners` value, ...)
+ * \param any_mask the scheme: a mask over any mesh type and number type, with
+ *         its options (a tension, a `Border_corners` value, ...); it is rebound
+ *         to `Analysis_mesh` with FT (the matrix) and with `double`
+ *         (characteristic map, verification)
+ * \param where the configuration (`Configuration`: valence, interior or border)
+ * \param np named parameters: `characteristic_map` (default true),
+ *         `verify_limit` (default true), `max_faces` (default 120000), `seed`
+ *         (default 20260)
+ * \returns the analysis; its `status` says whether every step ran
  * \throws Bad_input for an impossible configuration
  */
-template <template <class, class> class MaskTemplate, class FT = CGAL::Exact_rational, class... Args>
-Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
-                                            const Surface_analysis_options& options = Surface_analysis_options(),
-                                            const Args&... args)
+template <class FT = CGAL::Exact_rational, class AnyMask, class NamedParameters = parameters::Default_named_parameters>
+Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Configuration& where,
+                                            const NamedParameters& np = parameters::default_values())
 {
-  using Mask = MaskTemplate<Analysis_mesh, FT>;
-  using Double_mask = MaskTemplate<Analysis_mesh, double>;
-  using Traits = Host_of<Mask>;
-  const Mask mask(args...);
-  const Double_mask double_mask(args...);
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto mask = any_mask.template rebind<Analysis_mesh, FT>();
+  const auto double_mask = any_mask.template rebind<Analysis_mesh, double>();
+  using Traits = Host_of<std::decay_t<decltype(mask)>>;
+  internal::Surface_analysis_options options;
+  options.characteristic_map = choose_parameter(get_parameter(np, internal::characteristic_map_t()), true);
+  options.verify_limit = choose_parameter(get_parameter(np, internal::verify_limit_t()), true);
+  options.max_faces = choose_parameter(get_parameter(np, internal::max_faces_t()), options.max_faces);
+  options.seed = choose_parameter(get_parameter(np, internal::seed_t()), options.seed);
+  const int valence = where.valence;
+  const bool boundary = where.on_border();
   Surface_analysis<FT> result;
   result.scheme = mask.name();
   result.valence = valence;
@@ -745,7 +762,7 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
   result.face_centred = Traits::face_centred;
 
   // 1. the matrix
-  Local_subdivision_matrix<FT> local = local_subdivision_matrix<MaskTemplate, FT>(valence, boundary, 0, args...);
+  Local_subdivision_matrix<FT> local = local_subdivision_matrix<FT>(any_mask, where);
   result.matrix = local.S;
   result.ring = local.ring;
   result.rings = local.rings;
@@ -763,8 +780,14 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
   }
 
   // 2. the spectrum
+  if(!result.rows_sum_to_one)
+    result.status = Analysis_status::not_affine_invariant;
   const Eigen::MatrixXd D = internal::to_double_matrix(result.matrix);
   result.eigenvalues = internal::sorted_eigenvalues(D);
+  if(result.eigenvalues.size() != static_cast<std::size_t>(D.rows())) { // the solver did not converge
+    result.status = Analysis_status::no_convergence;
+    return result;
+  }
   internal::confirm_rational_eigenvalues(result.matrix, result.eigenvalues, result.exact_eigenvalues);
   const auto& ev = result.eigenvalues;
   if(ev.size() < 2)
@@ -799,7 +822,9 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
   result.limit_mask = internal::normalised_left_fixed_vector(result.matrix);
   {
     Eigen::EigenSolver<Eigen::MatrixXd> left(D.transpose(), true);
-    if(left.info() == Eigen::Success) {
+    if(left.info() != Eigen::Success)
+      result.status = Analysis_status::no_convergence;
+    else {
       std::vector<Eigen::Index> near; // eigenvalues of the pair: lambda_1 first
       for(const std::complex<double>& target : {ev[1], ev.size() > 2 ? ev[2] : ev[1]})
         for(Eigen::Index i = 0; i < m; ++i)
@@ -841,14 +866,14 @@ Surface_analysis<FT> analyse_surface_scheme(int valence, bool boundary,
 
 /*!
  * \ingroup PkgSubdivAnalysis
- * `analyse_surface_scheme<MaskTemplate>(valence, false)`: the analysis at an
+ * `analyse_surface_scheme(mask, Configuration(valence))`: the analysis at an
  * interior vertex (or face) of the given valence, as in the design sketch
- * `analyse<Loop_mask>(valence)`.
+ * `analyse(Loop_mask<Mesh>(), valence)`.
  */
-template <template <class, class> class MaskTemplate>
-Surface_analysis<CGAL::Exact_rational> analyse(int valence)
+template <class Mask>
+Surface_analysis<CGAL::Exact_rational> analyse(const Mask& mask, int valence)
 {
-  return analyse_surface_scheme<MaskTemplate>(valence, false);
+  return analyse_surface_scheme(mask, Configuration(valence));
 }
 
 } // namespace Subdiv

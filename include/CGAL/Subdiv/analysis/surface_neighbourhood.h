@@ -8,9 +8,11 @@
 /// of a surface scheme, built as a real mesh, refined by the scheme's own host
 /// and mask, and the local subdivision matrix read from the recorded stencils.
 
+#include <CGAL/Subdiv/analysis/Configuration.h>
 #include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Row_builder.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
@@ -624,28 +626,29 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
  * border faces: 1 ring, 4k - 2 vertices for k >= 3, 12 for k = 2, 9 for
  * k = 1); a given `rings` is used as is and the result says whether it is invariant.
  *
- * \tparam MaskTemplate a mask class template `MaskTemplate<Mesh, FT>`
- *         (`Loop_mask`, `Catmull_clark_mask`, ...; an alias template fixes
- *         further parameters, e.g. `Loop_mask<Mesh, FT, Warren_beta>`)
  * \tparam FT the number type of the weights: `CGAL::Exact_rational` (default)
  *         gives the exact matrix where the weights are rational
- * \param args forwarded to the mask's constructor (e.g. a butterfly tension)
+ * \param mask the scheme (any mesh and number type: it is rebound to
+ *         `Analysis_mesh` and FT with its options)
+ * \param np named parameters: `rings`
  * \throws Bad_input for a valence the scheme or the patch cannot have, or if
  *         no neighbourhood of up to 8 rings is invariant
  */
-template <template <class, class> class MaskTemplate, class FT = CGAL::Exact_rational, class... Args>
-Local_subdivision_matrix<FT> local_subdivision_matrix(int valence, bool border = false, int rings = 0,
-                                                      const Args&... args)
+template <class FT = CGAL::Exact_rational, class Mask, class NamedParameters = parameters::Default_named_parameters>
+Local_subdivision_matrix<FT> local_subdivision_matrix(const Mask& mask, const Configuration& where,
+                                                      const NamedParameters& np = parameters::default_values())
 {
-  const MaskTemplate<Analysis_mesh, FT> mask(args...);
+  const auto analysed = mask.template rebind<Analysis_mesh, FT>();
+  const int rings = parameters::choose_parameter(parameters::get_parameter(np, internal::rings_t()), 0);
   if(rings > 0)
-    return internal::local_matrix_of_rings(mask, valence, border, rings);
+    return internal::local_matrix_of_rings(analysed, where.valence, where.on_border(), rings);
   for(int r = 1; r <= 8; ++r) {
-    Local_subdivision_matrix<FT> result = internal::local_matrix_of_rings(mask, valence, border, r);
+    Local_subdivision_matrix<FT> result =
+      internal::local_matrix_of_rings(analysed, where.valence, where.on_border(), r);
     if(result.invariant)
       return result;
   }
-  throw Bad_input("no invariant neighbourhood of up to 8 rings for " + mask.name());
+  throw Bad_input("no invariant neighbourhood of up to 8 rings for " + analysed.name());
 }
 
 } // namespace Subdiv

@@ -45,8 +45,7 @@ public:
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   explicit Loop_mask(Border_corners corners = Border_corners::smooth)
     : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
-  {
-  }
+  {}
 
   /// the same rules, with the same options, for another mesh type and number type
   template <class OtherMesh, class OtherFT>
@@ -63,9 +62,14 @@ public:
   void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
     switch(v.rule()) {
-      case Vertex_rule::corner: acc.add(v.vertex(), FT(1)); return;
-      case Vertex_rule::crease: m_border.vertex_point(v, acc); return;
-      case Vertex_rule::smooth: break;
+      case Vertex_rule::corner:
+        acc.add(v.vertex(), FT(1));
+        return;
+      case Vertex_rule::crease:
+        m_border.vertex_point(v, acc);
+        return;
+      case Vertex_rule::smooth:
+        break;
     }
     const int n = v.valence();
     const FT beta = Beta::template beta<FT>(n);
@@ -93,6 +97,13 @@ private:
   Border_corners m_corners;
   Border_curve_rule<FT> m_border;
 };
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * Loop subdivision with Warren's rational weights (`Warren_beta`).
+ */
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+using Loop_warren_mask = Loop_mask<Mesh, FT, Warren_beta>;
 
 } // namespace Subdiv
 } // namespace CGAL

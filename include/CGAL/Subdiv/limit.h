@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_LIMIT_H
+#define CGAL_SUBDIV_LIMIT_H
+
+/// \file limit.h
+/// Convenience header of the limit surface: limit positions and normals,
+/// displacement, limit stencil tables (they use the analysis' masks).
+
+#include <CGAL/Subdiv/limit/Limit_evaluator.h>
+#include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
+
+#endif // CGAL_SUBDIV_LIMIT_H
