@@ -22,12 +22,12 @@ namespace internal {
 
 /// tags of the package's own named parameters (not in a namespace
 /// `internal_np`, which would hide CGAL's from code in CGAL::Subdiv)
-struct carried_data_t
-{
-};
-struct threads_t
-{
-};
+// carried_data_t and threads_t are only declared: Carried_data.h and
+// internal/parallel.h, which read them, still define them, and a second
+// definition here breaks every file that includes both. Define them here
+// when those two stop.
+struct carried_data_t;
+struct threads_t;
 struct closed_t
 {
 };
