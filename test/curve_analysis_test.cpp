@@ -447,10 +447,10 @@ TEST(Curve_analysis, bad_arguments)
   EXPECT_THROW(S::track_limit_point(polygon, chaikin, 0, -1), S::Bad_input);
   EXPECT_THROW(S::track_limit_point(std::vector<Point_2>(polygon.begin(), polygon.begin() + 2), chaikin, 0, 1),
                S::Bad_input);
-  EXPECT_THROW(S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 0)}, true), S::Bad_input);
-  EXPECT_THROW(S::measure_levels(std::vector<Point_2>{}, chaikin, S::Polyline_options()), S::Bad_input);
-  EXPECT_THROW(S::measure_levels(polygon, chaikin, S::Polyline_options().closed(true).number_of_iterations(-1)),
+  EXPECT_THROW(S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 0)}, S::parameters::closed(true)),
                S::Bad_input);
+  EXPECT_THROW(S::measure_levels(std::vector<Point_2>{}, chaikin, S::parameters::default_values()), S::Bad_input);
+  EXPECT_THROW(S::measure_levels(polygon, chaikin, S::parameters::closed(true).number_of_iterations(-1)), S::Bad_input);
 }
 
 // ---------------------------------------------------------------------------
@@ -466,18 +466,20 @@ TEST(Curve_measurements, discrete_curvature_of_regular_polygons)
     circle.emplace_back(x + 1, y - 3);
     tilted.emplace_back(x, y * 0.6, y * 0.8); // the same circle, in a tilted plane
   }
-  for(double k : S::discrete_curvature(circle, true))
+  for(double k : S::discrete_curvature(circle, S::parameters::closed(true)))
     EXPECT_NEAR(k, 1 / radius, 1e-12);
-  for(double k : S::discrete_curvature(tilted, true))
+  for(double k : S::discrete_curvature(tilted, S::parameters::closed(true)))
     EXPECT_NEAR(k, 1 / radius, 1e-12);
-  const auto open = S::discrete_curvature(circle, false);
+  const auto open = S::discrete_curvature(circle, S::parameters::closed(false));
   EXPECT_EQ(open.front(), 0.0);
   EXPECT_EQ(open.back(), 0.0);
   EXPECT_NEAR(open[8], 1 / radius, 1e-12);
-  const auto straight = S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 1), Point_2(3, 3)}, false);
+  const auto straight = S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 1), Point_2(3, 3)},
+                                              S::parameters::closed(false));
   EXPECT_EQ(straight, (std::vector<double>{0, 0, 0}));
   // a right angle with legs 1: circumradius sqrt(2)/2
-  const auto corner = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(0, 0), Point_2(0, 1)}, false);
+  const auto corner = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(0, 0), Point_2(0, 1)},
+                                            S::parameters::closed(false));
   EXPECT_NEAR(corner[1], std::sqrt(2.0), 1e-14);
 }
 
@@ -486,7 +488,7 @@ TEST(Curve_measurements, ratios_tend_to_the_predicted_rate)
   const std::vector<std::vector<Point_2>> polygons = {random_closed_polygon(7, 12), random_closed_polygon(2026, 9),
                                                       star_polygon(), bundled_polygon()};
   ASSERT_EQ(polygons.back().size(), 10u) << "doc/data/polygon.txt not found or changed";
-  const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(10);
+  const auto options = S::parameters::closed(true).number_of_iterations(10);
   for(std::size_t p = 0; p < polygons.size(); ++p) {
     const auto check = [&](const auto& scheme, const auto& exact_scheme) {
       const double predicted = S::analyse_curve_scheme(exact_scheme).predicted_rate;
@@ -512,7 +514,7 @@ TEST(Curve_measurements, four_point_rates)
 {
   // w = 1/16: the Jordan block at 1/4 makes the distances decay like k 4^-k,
   // so the ratio approaches 1/4 from above like (k + c + 1) / (4 (k + c))
-  const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(13);
+  const auto options = S::parameters::closed(true).number_of_iterations(13);
   for(const auto& polygon : {random_closed_polygon(7, 12), star_polygon(), bundled_polygon()}) {
     ASSERT_GE(polygon.size(), 3u);
     const auto levels = S::measure_levels(polygon, S::Four_point_scheme<double>(1.0 / 16), options);
@@ -539,7 +541,7 @@ TEST(Curve_measurements, open_polylines_and_point_3)
 {
   const auto polygon = random_closed_polygon(11, 10);
   for(const S::End_rule rule : {S::End_rule::shrink, S::End_rule::keep_ends}) {
-    const S::Polyline_options options = S::Polyline_options().number_of_iterations(10).end_rule(rule);
+    const auto options = S::parameters::number_of_iterations(10).end_rule(rule);
     const auto cubic = S::measure_levels(polygon, S::Uniform_bspline_scheme<double>(3), options);
     EXPECT_NEAR(cubic.back().ratio, 0.25, 0.005);
     const auto chaikin = S::measure_levels(polygon, S::Chaikin_scheme<double>(), options);
@@ -547,13 +549,13 @@ TEST(Curve_measurements, open_polylines_and_point_3)
     EXPECT_GT(chaikin.back().max_curvature, 0.0);
   }
   const auto space = S::measure_levels(twisted_polygon(), S::Uniform_bspline_scheme<double>(3),
-                                       S::Polyline_options().closed(true).number_of_iterations(9));
+                                       S::parameters::closed(true).number_of_iterations(9));
   EXPECT_NEAR(space.back().ratio, 0.25, 0.005);
   // the curvature of the levels converges to that of the limit curve
   EXPECT_NEAR(space[8].max_curvature, space[7].max_curvature, 1e-3 * space[8].max_curvature);
   // the linear B-spline does not move the curve
   const auto linear = S::measure_levels(polygon, S::Uniform_bspline_scheme<double>(1),
-                                        S::Polyline_options().closed(true).number_of_iterations(3));
+                                        S::parameters::closed(true).number_of_iterations(3));
   EXPECT_EQ(linear[1].distance, 0.0);
 }
 
@@ -561,8 +563,8 @@ TEST(Curve_measurements, exact_kernel_levels)
 {
   using Ke = CGAL::Simple_cartesian<Q>;
   const std::vector<Ke::Point_2> square = {Ke::Point_2(0, 0), Ke::Point_2(1, 0), Ke::Point_2(1, 1), Ke::Point_2(0, 1)};
-  const auto levels = S::measure_levels(square, S::Uniform_bspline_scheme<Q>(3),
-                                        S::Polyline_options().closed(true).number_of_iterations(4));
+  const auto levels =
+    S::measure_levels(square, S::Uniform_bspline_scheme<Q>(3), S::parameters::closed(true).number_of_iterations(4));
   // level 1 of the cubic B-spline on the unit square: corners move by |(1/8, 1/8)|
   EXPECT_NEAR(levels[0].distance, std::sqrt(2.0) / 8, 1e-15);
   EXPECT_NEAR(levels[3].ratio, 0.25, 1e-12);
