@@ -19,6 +19,7 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -435,6 +436,75 @@ TEST(Curve_analysis, other_number_types)
   EXPECT_TRUE(e.limit_mask[0] == FT(1) / FT(6));
   EXPECT_TRUE(e.limit_mask[1] == FT(2) / FT(3));
   EXPECT_EQ(e.smoothness, 2);
+}
+
+TEST(Curve_analysis, the_schemes_end_with_success)
+{
+  const auto check = [](const auto& r) { EXPECT_EQ(r.status, S::Analysis_status::success) << r.scheme; };
+  check(S::analyse_curve_scheme(S::Chaikin_scheme<Q>()));
+  check(S::analyse_curve_scheme(S::Corner_cutting_scheme<Q>(q(1, 10), q(7, 10))));
+  check(S::analyse_curve_scheme(S::Four_point_scheme<Q>()));
+  check(S::analyse_curve_scheme(S::Four_point_scheme<Q>(q(3, 16))));
+  for(int k = 1; k <= 7; ++k)
+    check(S::analyse_curve_scheme(S::Uniform_bspline_scheme<Q>(k)));
+  for(int d = 1; d <= 6; ++d)
+    check(S::analyse_bezier(S::Bezier_scheme<Q>(d)));
+  // floating point: the row sums are compared with a tolerance
+  check(S::analyse_curve_scheme(S::Four_point_scheme<double>(0.1)));
+  check(S::analyse_curve_scheme(S::Corner_cutting_scheme<double>(0.1, 0.7)));
+}
+
+// The linear B-spline scaled by 1/2: every level also halves the polyline
+// towards the origin. A valid CurveSubdivisionScheme, but its rules sum to 1/2.
+template <class FT>
+struct Halving_scheme
+{
+  using Number_type = FT;
+  std::string name() const { return "halving"; }
+  bool is_interpolating() const { return false; }
+  template <class Accumulator>
+  void even_mask(Accumulator& acc) const
+  {
+    acc.add(0, FT(1) / FT(2));
+  }
+  template <class Accumulator>
+  void odd_mask(Accumulator& acc) const
+  {
+    acc.add(0, FT(1) / FT(4));
+    acc.add(1, FT(1) / FT(4));
+  }
+};
+
+TEST(Curve_analysis, rows_that_do_not_sum_to_one_are_not_affine_invariant)
+{
+  const auto r = S::analyse_curve_scheme(Halving_scheme<Q>());
+  EXPECT_EQ(r.status, S::Analysis_status::not_affine_invariant);
+  EXPECT_EQ(S::to_string(r.status), "not affine invariant");
+  // the numbers are still those of the matrix: half the linear B-spline's
+  // (1, 1/2, 1/2), no eigenvalue 1, hence no limit mask and no convergence
+  EXPECT_TRUE(same_matrix(
+    r.matrix, rational_matrix({{q(1, 4), q(1, 4), Q(0)}, {Q(0), q(1, 2), Q(0)}, {Q(0), q(1, 4), q(1, 4)}})));
+  expect_real_eigenvalues(r.eigenvalues, {0.5, 0.25, 0.25}, r.scheme);
+  EXPECT_TRUE(r.limit_mask.empty());
+  EXPECT_FALSE(r.one_is_simple_and_dominant);
+  EXPECT_FALSE(r.converges);
+  EXPECT_EQ(S::analyse_curve_scheme(Halving_scheme<double>()).status, S::Analysis_status::not_affine_invariant);
+}
+
+TEST(Curve_analysis, a_failed_eigen_solve_is_reported)
+{
+  // No scheme was found whose local matrix makes Eigen's solver fail while
+  // its rows sum to 1 (non-finite weights fail the row sums first, huge ones
+  // are scaled by Eigen), so the solver's report is checked where it is read.
+  Eigen::MatrixXd broken(2, 2);
+  broken << std::numeric_limits<double>::quiet_NaN(), 0, 0, 1;
+  Eigen::ComputationInfo info = Eigen::Success;
+  EXPECT_TRUE(S::internal::sorted_eigenvalues(broken, info).empty());
+  EXPECT_NE(info, Eigen::Success);
+  Eigen::MatrixXd fine(2, 2);
+  fine << 1, 0, 0, 0.5;
+  EXPECT_EQ(S::internal::sorted_eigenvalues(fine, info).size(), 2u);
+  EXPECT_EQ(info, Eigen::Success);
 }
 
 TEST(Curve_analysis, bad_arguments)

@@ -8,6 +8,7 @@
 /// matrix and its spectrum, limit mask, difference-scheme smoothness proof,
 /// and measurements on real polylines that check the predictions.
 
+#include <CGAL/Subdiv/analysis/Analysis_status.h>
 #include <CGAL/Subdiv/analysis/curve_local_matrix.h>
 #include <CGAL/Subdiv/analysis/curve_symbol.h>
 #include <CGAL/Subdiv/curves/Bezier_scheme.h>
@@ -51,6 +52,11 @@ struct Curve_analysis
 {
   /// `scheme.name()`
   std::string scheme;
+  /// how the analysis ended; the spectrum and the verdicts mean something only
+  /// with `Analysis_status::success`. `not_affine_invariant` (a row of `matrix`
+  /// does not sum to 1) is checked first and kept; `no_convergence` says that
+  /// Eigen's eigen-solver failed, and `eigenvalues` is then empty.
+  Analysis_status status = Analysis_status::success;
   /// offsets of the invariant window of old points (`invariant_window()`)
   int window_first = 0, window_last = 0;
   /// local subdivision matrix over the window, exact in FT (`local_subdivision_matrix()`)
@@ -95,18 +101,46 @@ inline void sort_eigenvalues(std::vector<std::complex<double>>& values)
   });
 }
 
-inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S)
+// the eigenvalues of S, sorted; empty, with `info` telling why, if Eigen's
+// solver failed (the caller decides what a failure means for its analysis)
+inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S, Eigen::ComputationInfo& info)
 {
   std::vector<std::complex<double>> values;
+  info = Eigen::Success;
   if(S.rows() == 0)
     return values;
   Eigen::EigenSolver<Eigen::MatrixXd> solver(S, false);
-  if(solver.info() != Eigen::Success)
+  info = solver.info();
+  if(info != Eigen::Success)
     return values;
   for(Eigen::Index i = 0; i < S.rows(); ++i)
     values.push_back(solver.eigenvalues()[i]);
   sort_eigenvalues(values);
   return values;
+}
+
+// the same, for callers that read a failure from the empty result
+inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S)
+{
+  Eigen::ComputationInfo info;
+  return sorted_eigenvalues(S, info);
+}
+
+// affine invariance: every row of the local matrix sums to 1 (exactly for
+// exact FT, to a relative 1e-12 for floating point), so that moving all old
+// points moves the new ones alike
+template <class FT>
+bool rows_sum_to_one(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S)
+{
+  const FT one(1);
+  for(Eigen::Index r = 0; r < S.rows(); ++r) {
+    FT sum(0);
+    for(Eigen::Index c = 0; c < S.cols(); ++c)
+      sum += S(r, c);
+    if(!is_negligible(FT(sum - one), one))
+      return false;
+  }
+  return true;
 }
 
 template <class FT>
@@ -164,7 +198,12 @@ void snap_dyadic_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dyna
 template <class FT>
 void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
 {
-  result.eigenvalues = sorted_eigenvalues(to_double_matrix(result.matrix));
+  if(!rows_sum_to_one(result.matrix))
+    result.status = Analysis_status::not_affine_invariant;
+  Eigen::ComputationInfo info;
+  result.eigenvalues = sorted_eigenvalues(to_double_matrix(result.matrix), info);
+  if(info != Eigen::Success && result.status == Analysis_status::success)
+    result.status = Analysis_status::no_convergence;
   snap_dyadic_eigenvalues(result.matrix, result.eigenvalues);
   result.limit_mask = normalised_left_fixed_vector(result.matrix);
   const auto& ev = result.eigenvalues;
@@ -233,7 +272,11 @@ void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
  *   the regularity is decided elsewhere (four-point with w > 1/16, whose
  *   subdominant pair is complex; corner cutting with a + 1/2 > b and b - a < 1/2)
  *   the observed rate is larger, between `predicted_rate` and about
- *   \f$ 2^{-holder\_exponent} \f$.
+ *   \f$ 2^{-holder\_exponent} \f$;
+ * - `status`: `Analysis_status::not_affine_invariant` if a row of S does not
+ *   sum to 1 (a custom scheme; every scheme of the package is affine
+ *   invariant), `Analysis_status::no_convergence` if Eigen's solver failed
+ *   (`eigenvalues` is then empty). The other fields are computed as always.
  *
  * With a floating-point `FT`, divisibility by (1+z) is decided with a tolerance
  * and fails for very high orders (B-splines of degree > 40): analyse with an
