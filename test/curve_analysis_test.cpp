@@ -19,6 +19,7 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -437,6 +438,75 @@ TEST(Curve_analysis, other_number_types)
   EXPECT_EQ(e.smoothness, 2);
 }
 
+TEST(Curve_analysis, the_schemes_end_with_success)
+{
+  const auto check = [](const auto& r) { EXPECT_EQ(r.status, S::Analysis_status::success) << r.scheme; };
+  check(S::analyse_curve_scheme(S::Chaikin_scheme<Q>()));
+  check(S::analyse_curve_scheme(S::Corner_cutting_scheme<Q>(q(1, 10), q(7, 10))));
+  check(S::analyse_curve_scheme(S::Four_point_scheme<Q>()));
+  check(S::analyse_curve_scheme(S::Four_point_scheme<Q>(q(3, 16))));
+  for(int k = 1; k <= 7; ++k)
+    check(S::analyse_curve_scheme(S::Uniform_bspline_scheme<Q>(k)));
+  for(int d = 1; d <= 6; ++d)
+    check(S::analyse_bezier(S::Bezier_scheme<Q>(d)));
+  // floating point: the row sums are compared with a tolerance
+  check(S::analyse_curve_scheme(S::Four_point_scheme<double>(0.1)));
+  check(S::analyse_curve_scheme(S::Corner_cutting_scheme<double>(0.1, 0.7)));
+}
+
+// The linear B-spline scaled by 1/2: every level also halves the polyline
+// towards the origin. A valid CurveSubdivisionScheme, but its rules sum to 1/2.
+template <class FT>
+struct Halving_scheme
+{
+  using Number_type = FT;
+  std::string name() const { return "halving"; }
+  bool is_interpolating() const { return false; }
+  template <class Accumulator>
+  void even_mask(Accumulator& acc) const
+  {
+    acc.add(0, FT(1) / FT(2));
+  }
+  template <class Accumulator>
+  void odd_mask(Accumulator& acc) const
+  {
+    acc.add(0, FT(1) / FT(4));
+    acc.add(1, FT(1) / FT(4));
+  }
+};
+
+TEST(Curve_analysis, rows_that_do_not_sum_to_one_are_not_affine_invariant)
+{
+  const auto r = S::analyse_curve_scheme(Halving_scheme<Q>());
+  EXPECT_EQ(r.status, S::Analysis_status::not_affine_invariant);
+  EXPECT_EQ(S::to_string(r.status), "not affine invariant");
+  // the numbers are still those of the matrix: half the linear B-spline's
+  // (1, 1/2, 1/2), no eigenvalue 1, hence no limit mask and no convergence
+  EXPECT_TRUE(same_matrix(
+    r.matrix, rational_matrix({{q(1, 4), q(1, 4), Q(0)}, {Q(0), q(1, 2), Q(0)}, {Q(0), q(1, 4), q(1, 4)}})));
+  expect_real_eigenvalues(r.eigenvalues, {0.5, 0.25, 0.25}, r.scheme);
+  EXPECT_TRUE(r.limit_mask.empty());
+  EXPECT_FALSE(r.one_is_simple_and_dominant);
+  EXPECT_FALSE(r.converges);
+  EXPECT_EQ(S::analyse_curve_scheme(Halving_scheme<double>()).status, S::Analysis_status::not_affine_invariant);
+}
+
+TEST(Curve_analysis, a_failed_eigen_solve_is_reported)
+{
+  // No scheme was found whose local matrix makes Eigen's solver fail while
+  // its rows sum to 1 (non-finite weights fail the row sums first, huge ones
+  // are scaled by Eigen), so the solver's report is checked where it is read.
+  Eigen::MatrixXd broken(2, 2);
+  broken << std::numeric_limits<double>::quiet_NaN(), 0, 0, 1;
+  Eigen::ComputationInfo info = Eigen::Success;
+  EXPECT_TRUE(S::internal::sorted_eigenvalues(broken, info).empty());
+  EXPECT_NE(info, Eigen::Success);
+  Eigen::MatrixXd fine(2, 2);
+  fine << 1, 0, 0, 0.5;
+  EXPECT_EQ(S::internal::sorted_eigenvalues(fine, info).size(), 2u);
+  EXPECT_EQ(info, Eigen::Success);
+}
+
 TEST(Curve_analysis, bad_arguments)
 {
   EXPECT_THROW(S::analyse_curve_scheme(S::Chaikin_scheme<Q>(), 0), S::Bad_input);
@@ -447,10 +517,10 @@ TEST(Curve_analysis, bad_arguments)
   EXPECT_THROW(S::track_limit_point(polygon, chaikin, 0, -1), S::Bad_input);
   EXPECT_THROW(S::track_limit_point(std::vector<Point_2>(polygon.begin(), polygon.begin() + 2), chaikin, 0, 1),
                S::Bad_input);
-  EXPECT_THROW(S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 0)}, true), S::Bad_input);
-  EXPECT_THROW(S::measure_levels(std::vector<Point_2>{}, chaikin, S::Polyline_options()), S::Bad_input);
-  EXPECT_THROW(S::measure_levels(polygon, chaikin, S::Polyline_options().closed(true).number_of_iterations(-1)),
+  EXPECT_THROW(S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 0)}, S::parameters::closed(true)),
                S::Bad_input);
+  EXPECT_THROW(S::measure_levels(std::vector<Point_2>{}, chaikin, S::parameters::default_values()), S::Bad_input);
+  EXPECT_THROW(S::measure_levels(polygon, chaikin, S::parameters::closed(true).number_of_iterations(-1)), S::Bad_input);
 }
 
 // ---------------------------------------------------------------------------
@@ -466,18 +536,20 @@ TEST(Curve_measurements, discrete_curvature_of_regular_polygons)
     circle.emplace_back(x + 1, y - 3);
     tilted.emplace_back(x, y * 0.6, y * 0.8); // the same circle, in a tilted plane
   }
-  for(double k : S::discrete_curvature(circle, true))
+  for(double k : S::discrete_curvature(circle, S::parameters::closed(true)))
     EXPECT_NEAR(k, 1 / radius, 1e-12);
-  for(double k : S::discrete_curvature(tilted, true))
+  for(double k : S::discrete_curvature(tilted, S::parameters::closed(true)))
     EXPECT_NEAR(k, 1 / radius, 1e-12);
-  const auto open = S::discrete_curvature(circle, false);
+  const auto open = S::discrete_curvature(circle, S::parameters::closed(false));
   EXPECT_EQ(open.front(), 0.0);
   EXPECT_EQ(open.back(), 0.0);
   EXPECT_NEAR(open[8], 1 / radius, 1e-12);
-  const auto straight = S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 1), Point_2(3, 3)}, false);
+  const auto straight = S::discrete_curvature(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 1), Point_2(3, 3)},
+                                              S::parameters::closed(false));
   EXPECT_EQ(straight, (std::vector<double>{0, 0, 0}));
   // a right angle with legs 1: circumradius sqrt(2)/2
-  const auto corner = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(0, 0), Point_2(0, 1)}, false);
+  const auto corner = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(0, 0), Point_2(0, 1)},
+                                            S::parameters::closed(false));
   EXPECT_NEAR(corner[1], std::sqrt(2.0), 1e-14);
 }
 
@@ -486,7 +558,7 @@ TEST(Curve_measurements, ratios_tend_to_the_predicted_rate)
   const std::vector<std::vector<Point_2>> polygons = {random_closed_polygon(7, 12), random_closed_polygon(2026, 9),
                                                       star_polygon(), bundled_polygon()};
   ASSERT_EQ(polygons.back().size(), 10u) << "doc/data/polygon.txt not found or changed";
-  const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(10);
+  const auto options = S::parameters::closed(true).number_of_iterations(10);
   for(std::size_t p = 0; p < polygons.size(); ++p) {
     const auto check = [&](const auto& scheme, const auto& exact_scheme) {
       const double predicted = S::analyse_curve_scheme(exact_scheme).predicted_rate;
@@ -512,7 +584,7 @@ TEST(Curve_measurements, four_point_rates)
 {
   // w = 1/16: the Jordan block at 1/4 makes the distances decay like k 4^-k,
   // so the ratio approaches 1/4 from above like (k + c + 1) / (4 (k + c))
-  const S::Polyline_options options = S::Polyline_options().closed(true).number_of_iterations(13);
+  const auto options = S::parameters::closed(true).number_of_iterations(13);
   for(const auto& polygon : {random_closed_polygon(7, 12), star_polygon(), bundled_polygon()}) {
     ASSERT_GE(polygon.size(), 3u);
     const auto levels = S::measure_levels(polygon, S::Four_point_scheme<double>(1.0 / 16), options);
@@ -539,7 +611,7 @@ TEST(Curve_measurements, open_polylines_and_point_3)
 {
   const auto polygon = random_closed_polygon(11, 10);
   for(const S::End_rule rule : {S::End_rule::shrink, S::End_rule::keep_ends}) {
-    const S::Polyline_options options = S::Polyline_options().number_of_iterations(10).end_rule(rule);
+    const auto options = S::parameters::number_of_iterations(10).end_rule(rule);
     const auto cubic = S::measure_levels(polygon, S::Uniform_bspline_scheme<double>(3), options);
     EXPECT_NEAR(cubic.back().ratio, 0.25, 0.005);
     const auto chaikin = S::measure_levels(polygon, S::Chaikin_scheme<double>(), options);
@@ -547,13 +619,13 @@ TEST(Curve_measurements, open_polylines_and_point_3)
     EXPECT_GT(chaikin.back().max_curvature, 0.0);
   }
   const auto space = S::measure_levels(twisted_polygon(), S::Uniform_bspline_scheme<double>(3),
-                                       S::Polyline_options().closed(true).number_of_iterations(9));
+                                       S::parameters::closed(true).number_of_iterations(9));
   EXPECT_NEAR(space.back().ratio, 0.25, 0.005);
   // the curvature of the levels converges to that of the limit curve
   EXPECT_NEAR(space[8].max_curvature, space[7].max_curvature, 1e-3 * space[8].max_curvature);
   // the linear B-spline does not move the curve
   const auto linear = S::measure_levels(polygon, S::Uniform_bspline_scheme<double>(1),
-                                        S::Polyline_options().closed(true).number_of_iterations(3));
+                                        S::parameters::closed(true).number_of_iterations(3));
   EXPECT_EQ(linear[1].distance, 0.0);
 }
 
@@ -561,8 +633,8 @@ TEST(Curve_measurements, exact_kernel_levels)
 {
   using Ke = CGAL::Simple_cartesian<Q>;
   const std::vector<Ke::Point_2> square = {Ke::Point_2(0, 0), Ke::Point_2(1, 0), Ke::Point_2(1, 1), Ke::Point_2(0, 1)};
-  const auto levels = S::measure_levels(square, S::Uniform_bspline_scheme<Q>(3),
-                                        S::Polyline_options().closed(true).number_of_iterations(4));
+  const auto levels =
+    S::measure_levels(square, S::Uniform_bspline_scheme<Q>(3), S::parameters::closed(true).number_of_iterations(4));
   // level 1 of the cubic B-spline on the unit square: corners move by |(1/8, 1/8)|
   EXPECT_NEAR(levels[0].distance, std::sqrt(2.0) / 8, 1e-15);
   EXPECT_NEAR(levels[3].ratio, 0.25, 1e-12);

@@ -6,9 +6,11 @@
 #include <CGAL/Subdiv.h>
 
 #include <gtest/gtest.h>
+#include <boost/range/iterator_range.hpp>
 
 #include <cmath>
 #include <limits>
+#include <list>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -153,7 +155,7 @@ TYPED_TEST(Curve_schemes, degree_two_bspline_and_quarter_corner_cutting_equal_ch
   using FT = typename TypeParam::FT;
   const auto points = star<TypeParam>();
   for(bool closed : {false, true}) {
-    const auto options = S::Polyline_options().number_of_iterations(3).closed(closed);
+    const auto options = S::parameters::number_of_iterations(3).closed(closed);
     const auto chaikin = S::refine_polyline(points, S::Chaikin_scheme<FT>(), options);
     EXPECT_EQ(chaikin.size(), closed ? 64u : 50u);
     EXPECT_TRUE(same_points(chaikin, S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(2), options)));
@@ -174,8 +176,8 @@ TYPED_TEST(Curve_schemes, lane_riesenfeld_on_points_equals_the_masks)
   for(int k = 1; k <= 6; ++k)
     for(bool closed : {false, true}) {
       const auto by_mask = S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(k),
-                                              S::Polyline_options().closed(closed).end_rule(S::End_rule::shrink));
-      EXPECT_TRUE(same_points(by_mask, S::lane_riesenfeld_refine(points, k, closed)))
+                                              S::parameters::closed(closed).end_rule(S::End_rule::shrink));
+      EXPECT_TRUE(same_points(by_mask, S::lane_riesenfeld_refine(points, k, S::parameters::closed(closed))))
         << "degree " << k << (closed ? " closed" : " open");
     }
 }
@@ -185,7 +187,7 @@ TYPED_TEST(Curve_schemes, cubic_bspline_closed_form_rules)
   using FT = typename TypeParam::FT;
   using P = typename TypeParam::Point_2;
   const auto points = star<TypeParam>();
-  const auto refined = S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(3), S::Polyline_options().closed(true));
+  const auto refined = S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(3), S::parameters::closed(true));
   ASSERT_EQ(refined.size(), 2 * points.size());
   const std::size_t n = points.size();
   for(std::size_t i = 0; i < n; ++i) {
@@ -210,7 +212,7 @@ TYPED_TEST(Curve_schemes, four_point_keeps_every_old_point_and_uses_its_weights)
 
   for(bool closed : {false, true}) {
     const auto refined = S::refine_polyline(
-      points, scheme, S::Polyline_options().number_of_iterations(3).closed(closed).end_rule(S::End_rule::keep_ends));
+      points, scheme, S::parameters::number_of_iterations(3).closed(closed).end_rule(S::End_rule::keep_ends));
     ASSERT_EQ(refined.size(), closed ? 8 * points.size() : 8 * (points.size() - 1) + 1);
     for(std::size_t i = 0; i < points.size(); ++i)
       EXPECT_TRUE(same_point(refined[8 * i], points[i])) << "old point " << i;
@@ -236,15 +238,15 @@ TYPED_TEST(Curve_schemes, open_end_rules)
   EXPECT_EQ(shrunk.size(), 2 * points.size() - 3);
   EXPECT_TRUE(same_point(shrunk.front(), CGAL::midpoint(points[0], points[1])));
   // after many levels the first point approaches the limit point of p1, (p0 + 4 p1 + p2) / 6
-  const auto deep = S::refine_polyline(points, cubic, S::Polyline_options().number_of_iterations(12));
+  const auto deep = S::refine_polyline(points, cubic, S::parameters::number_of_iterations(12));
   const P limit(frac<FT>(1, 6) * (points[0].x() + 4 * points[1].x() + points[2].x()),
                 frac<FT>(1, 6) * (points[0].y() + 4 * points[1].y() + points[2].y()));
   EXPECT_LT(CGAL::to_double(CGAL::squared_distance(deep.front(), limit)), 1e-6);
 
   // keep_ends: every scheme keeps the two end points
   const auto keeps_ends = [&](const auto& scheme) {
-    const auto refined = S::refine_polyline(
-      points, scheme, S::Polyline_options().number_of_iterations(3).end_rule(S::End_rule::keep_ends));
+    const auto refined =
+      S::refine_polyline(points, scheme, S::parameters::number_of_iterations(3).end_rule(S::End_rule::keep_ends));
     EXPECT_TRUE(same_point(refined.front(), points.front())) << scheme.name();
     EXPECT_TRUE(same_point(refined.back(), points.back())) << scheme.name();
   };
@@ -256,7 +258,7 @@ TYPED_TEST(Curve_schemes, open_end_rules)
     keeps_ends(S::Uniform_bspline_scheme<FT>(k));
 
   // the cubic end rule is the reflection p_-1 = 2 p_0 - p_1: p'_1 = midpoint of the first edge
-  const auto kept = S::refine_polyline(points, cubic, S::Polyline_options().end_rule(S::End_rule::keep_ends));
+  const auto kept = S::refine_polyline(points, cubic, S::parameters::end_rule(S::End_rule::keep_ends));
   EXPECT_EQ(kept.size(), 2 * points.size() - 1);
   EXPECT_TRUE(same_point(kept[1], CGAL::midpoint(points[0], points[1])));
 }
@@ -293,7 +295,7 @@ TYPED_TEST(Curve_schemes, de_casteljau_halves_reproduce_the_curve)
     std::vector<P> control;
     for(int i = 0; i <= d; ++i)
       control.push_back(P(i, (i * i * 7) % 5 - 2));
-    const auto refined = S::bezier_subdivision(control, d, S::Bezier_options().number_of_iterations(3));
+    const auto refined = S::bezier_subdivision(control, d, S::parameters::number_of_iterations(3));
     ASSERT_EQ(refined.size(), static_cast<std::size_t>(8 * d + 1));
     for(int s = 0; s <= 8; ++s)
       EXPECT_TRUE(same_point(refined[s * d], S::bezier_point(control, frac<FT>(s, 8)))) << "degree " << d;
@@ -306,7 +308,7 @@ TYPED_TEST(Curve_schemes, bezier_chains_open_closed_and_to_tolerance)
   using P = typename TypeParam::Point_2;
   // a closed chain of two quadratic segments
   const std::vector<P> ring{P(0, 0), P(2, -1), P(4, 0), P(2, 3)};
-  const auto closed = S::bezier_subdivision(ring, 2, S::Bezier_options().closed(true).number_of_iterations(2));
+  const auto closed = S::bezier_subdivision(ring, 2, S::parameters::closed(true).number_of_iterations(2));
   EXPECT_EQ(closed.size(), 16u);
   EXPECT_TRUE(same_point(closed[0], ring[0]));
   EXPECT_TRUE(same_point(closed[8], ring[2]));
@@ -328,6 +330,157 @@ TYPED_TEST(Curve_schemes, bezier_chains_open_closed_and_to_tolerance)
   EXPECT_EQ(S::bezier_subdivision_to_tolerance(straight, 3, tolerance).size(), 4u);
 }
 
+// Named parameters and point ranges only change how a call is written: every
+// way of writing the same call gives the same points (exactly, in an exact kernel).
+TYPED_TEST(Curve_schemes, any_point_range_gives_the_same_points)
+{
+  using FT = typename TypeParam::FT;
+  using P = typename TypeParam::Point_2;
+  const std::vector<P> vector = star<TypeParam>();
+  const std::list<P> list(vector.begin(), vector.end());
+  const auto range = boost::make_iterator_range(list.begin(), list.end());
+  const S::Four_point_scheme<FT> four_point;
+  const auto np = S::parameters::number_of_iterations(3).end_rule(S::End_rule::keep_ends);
+
+  const auto from_vector = S::refine_polyline(vector, four_point, np);
+  ASSERT_EQ(from_vector.size(), 57u); // keep_ends of a primal scheme: 2n - 1 points per level
+  EXPECT_TRUE(same_points(S::refine_polyline(list, four_point, np), from_vector));
+  EXPECT_TRUE(same_points(S::refine_polyline(range, four_point, np), from_vector));
+  // the end points are kept; the first new point is the reflected four-point rule
+  EXPECT_TRUE(same_point(from_vector.front(), vector.front()));
+  EXPECT_TRUE(same_point(from_vector.back(), vector.back()));
+
+  const std::vector<P> chain(vector.begin(), vector.begin() + 7); // two cubic segments
+  const std::list<P> chain_list(chain.begin(), chain.end());
+  const auto bezier = S::bezier_subdivision(chain, 3, S::parameters::number_of_iterations(2));
+  EXPECT_EQ(bezier.size(), 25u);
+  EXPECT_TRUE(same_points(S::bezier_subdivision(chain_list, 3, S::parameters::number_of_iterations(2)), bezier));
+  EXPECT_TRUE(same_point(S::bezier_point(chain_list, frac<FT>(1, 2)), S::bezier_point(chain, frac<FT>(1, 2))));
+  EXPECT_TRUE(same_points(S::de_casteljau_split(chain_list, frac<FT>(1, 3)).second,
+                          S::de_casteljau_split(chain, frac<FT>(1, 3)).second));
+
+  EXPECT_TRUE(same_points(S::lane_riesenfeld_refine(list, 3, S::parameters::closed(true)),
+                          S::lane_riesenfeld_refine(vector, 3, S::parameters::closed(true))));
+}
+
+TYPED_TEST(Curve_schemes, cgal_and_subdiv_named_parameters_agree)
+{
+  using FT = typename TypeParam::FT;
+  const auto points = star<TypeParam>();
+  const S::Uniform_bspline_scheme<FT> cubic(3);
+  const auto ours = S::refine_polyline(points, cubic, S::parameters::number_of_iterations(2));
+  const auto cgal = S::refine_polyline(points, cubic, CGAL::parameters::number_of_iterations(2));
+  EXPECT_EQ(ours.size(), 23u); // shrink: the cubic B-spline makes 2n - 3 points, 8 -> 13 -> 23
+  EXPECT_TRUE(same_points(cgal, ours));
+  // any integer type, as in CGAL
+  EXPECT_TRUE(same_points(S::refine_polyline(points, cubic, CGAL::parameters::number_of_iterations(2u)), ours));
+
+  const std::vector<typename TypeParam::Point_2> chain(points.begin(), points.begin() + 7);
+  EXPECT_TRUE(same_points(S::bezier_subdivision(chain, 3, CGAL::parameters::number_of_iterations(2)),
+                          S::bezier_subdivision(chain, 3, S::parameters::number_of_iterations(2))));
+  EXPECT_TRUE(same_points(S::lane_riesenfeld_refine(points, 3, CGAL::parameters::number_of_iterations(2)),
+                          S::lane_riesenfeld_refine(points, 3, S::parameters::number_of_iterations(2))));
+}
+
+TYPED_TEST(Curve_schemes, named_parameters_in_any_order_give_the_same_points)
+{
+  using FT = typename TypeParam::FT;
+  const auto points = star<TypeParam>();
+  const S::Chaikin_scheme<FT> chaikin;
+  namespace np = S::parameters;
+  const auto first = S::refine_polyline(
+    points, chaikin, np::number_of_iterations(3).closed(true).end_rule(S::End_rule::keep_ends).max_output_points(100));
+  ASSERT_EQ(first.size(), 64u); // closed: end_rule does not apply
+  EXPECT_TRUE(
+    same_points(S::refine_polyline(
+                  points, chaikin,
+                  np::max_output_points(100).end_rule(S::End_rule::keep_ends).closed(true).number_of_iterations(3)),
+                first));
+  EXPECT_TRUE(same_points(S::refine_polyline(points, chaikin,
+                                             np::closed(true).max_output_points(100).number_of_iterations(3).end_rule(
+                                               S::End_rule::keep_ends)),
+                          first));
+  EXPECT_TRUE(
+    same_points(S::refine_polyline(
+                  points, chaikin,
+                  np::end_rule(S::End_rule::keep_ends).number_of_iterations(3).max_output_points(100).closed(true)),
+                first));
+  // the first point of level 1 is 3/4 P0 + 1/4 P1: (1, 1/4); the chain changed nothing
+  EXPECT_TRUE(same_point(S::refine_polyline(points, chaikin, np::closed(true).number_of_iterations(1))[0],
+                         typename TypeParam::Point_2(1, frac<FT>(1, 4))));
+
+  // the defaults are those of the chain written out
+  const auto defaults = S::refine_polyline(points, chaikin);
+  EXPECT_TRUE(same_points(S::refine_polyline(points, chaikin, np::default_values()), defaults));
+  EXPECT_TRUE(same_points(S::refine_polyline(points, chaikin,
+                                             np::number_of_iterations(1)
+                                               .closed(false)
+                                               .end_rule(S::End_rule::shrink)
+                                               .max_output_points(S::default_max_output_points)),
+                          defaults));
+
+  // Bezier: levels or a tolerance, in any order with the rest
+  const std::vector<typename TypeParam::Point_2> ring(points.begin(), points.begin() + 6); // two closed cubics
+  const auto levels = S::bezier_subdivision(ring, 3, np::number_of_iterations(2).closed(true).max_output_points(100));
+  EXPECT_EQ(levels.size(), 24u);
+  EXPECT_TRUE(same_points(
+    S::bezier_subdivision(ring, 3, np::max_output_points(100).closed(true).number_of_iterations(2)), levels));
+  const FT tolerance = frac<FT>(1, 10);
+  const auto flat = S::bezier_subdivision(ring, 3, np::flatness_tolerance(tolerance).closed(true));
+  EXPECT_GT(flat.size(), 6u);
+  EXPECT_TRUE(same_points(S::bezier_subdivision(ring, 3, np::closed(true).flatness_tolerance(tolerance)), flat));
+  EXPECT_TRUE(same_points(S::bezier_subdivision_to_tolerance(ring, 3, tolerance, np::closed(true)), flat));
+
+  // lane_riesenfeld_refine: several levels are refine_polyline's levels
+  for(bool closed : {false, true})
+    EXPECT_TRUE(same_points(
+      S::lane_riesenfeld_refine(points, 3, np::closed(closed).number_of_iterations(2)),
+      S::refine_polyline(points, S::Uniform_bspline_scheme<FT>(3), np::number_of_iterations(2).closed(closed))))
+      << (closed ? "closed" : "open");
+}
+
+TYPED_TEST(Curve_schemes, named_parameter_limits_are_refused)
+{
+  using FT = typename TypeParam::FT;
+  using P = typename TypeParam::Point_2;
+  const auto points = star<TypeParam>();
+  namespace np = S::parameters;
+  const auto refused = [](const auto& call, const std::string& part) {
+    try {
+      call();
+    } catch(const S::Bad_input& e) {
+      return ::testing::AssertionResult(std::string(e.what()).find(part) != std::string::npos) << e.what();
+    }
+    return ::testing::AssertionFailure() << "no exception";
+  };
+  // 8 points, 2 levels closed: 32 > 20
+  EXPECT_TRUE(refused(
+    [&] {
+      S::refine_polyline(points, S::Chaikin_scheme<FT>(),
+                         np::closed(true).number_of_iterations(2).max_output_points(20));
+    },
+    "max_output_points"));
+  EXPECT_EQ(
+    S::refine_polyline(points, S::Chaikin_scheme<FT>(), np::max_output_points(32).number_of_iterations(2).closed(true))
+      .size(),
+    32u);
+  const std::vector<P> chain(points.begin(), points.begin() + 7);
+  EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::number_of_iterations(3).max_output_points(40)); },
+                      "max_output_points"));
+  EXPECT_TRUE(
+    refused([&] { S::bezier_subdivision(chain, 3, np::flatness_tolerance(frac<FT>(1, 1000)).max_output_points(8)); },
+            "max_output_points"));
+  EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::number_of_iterations(2).flatness_tolerance(FT(1))); },
+                      "not both"));
+  EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::flatness_tolerance(FT(-1))); }, "positive"));
+  EXPECT_TRUE(refused([&] { S::lane_riesenfeld_refine(points, 3, np::number_of_iterations(-1)); }, "negative"));
+  EXPECT_TRUE(refused(
+    [&] {
+      S::lane_riesenfeld_refine(std::vector<P>(points.begin(), points.begin() + 3), 5, np::number_of_iterations(2));
+    },
+    "shrank"));
+}
+
 TYPED_TEST(Curve_schemes, affine_invariance_and_3d)
 {
   using FT = typename TypeParam::FT;
@@ -339,7 +492,7 @@ TYPED_TEST(Curve_schemes, affine_invariance_and_3d)
   for(const P3& p : points)
     moved.push_back(t.transform(p));
   const auto check = [&](const auto& scheme, bool closed) {
-    const auto options = S::Polyline_options().number_of_iterations(2).closed(closed).end_rule(S::End_rule::keep_ends);
+    const auto options = S::parameters::number_of_iterations(2).closed(closed).end_rule(S::End_rule::keep_ends);
     auto refined = S::refine_polyline(points, scheme, options);
     for(P3& p : refined)
       p = t.transform(p);
@@ -372,25 +525,23 @@ TYPED_TEST(Curve_schemes, bad_input_is_refused_with_a_clear_message)
   const S::Chaikin_scheme<FT> chaikin;
   EXPECT_TRUE(contains(message([&] { S::refine_polyline(std::vector<P>(), chaikin); }), "empty"));
   EXPECT_TRUE(contains(message([&] { S::refine_polyline(std::vector<P>{P(0, 0)}, chaikin); }), "at least 2"));
-  EXPECT_TRUE(
-    contains(message([&] {
-               S::refine_polyline(std::vector<P>{P(0, 0), P(1, 1)}, chaikin, S::Polyline_options().closed(true));
-             }),
-             "at least 3"));
+  EXPECT_TRUE(contains(message([&] {
+                         S::refine_polyline(std::vector<P>{P(0, 0), P(1, 1)}, chaikin, S::parameters::closed(true));
+                       }),
+                       "at least 3"));
   EXPECT_TRUE(contains(message([&] {
                          S::refine_polyline(std::vector<P>{P(0, 0), P(1, 0), P(2, 0)}, S::Four_point_scheme<FT>());
                        }),
                        "too short"));
   EXPECT_TRUE(contains(message([&] {
                          S::refine_polyline(std::vector<P>{P(0, 0), P(1, 0)}, S::Uniform_bspline_scheme<FT>(7),
-                                            S::Polyline_options().end_rule(S::End_rule::keep_ends));
+                                            S::parameters::end_rule(S::End_rule::keep_ends));
                        }),
                        "too short"));
-  EXPECT_TRUE(contains(
-    message([&] { S::refine_polyline(points, chaikin, S::Polyline_options().number_of_iterations(-1)); }), "negative"));
-  EXPECT_TRUE(
-    contains(message([&] { S::refine_polyline(points, chaikin, S::Polyline_options().number_of_iterations(40)); }),
-             "max_output_points"));
+  EXPECT_TRUE(contains(message([&] { S::refine_polyline(points, chaikin, S::parameters::number_of_iterations(-1)); }),
+                       "negative"));
+  EXPECT_TRUE(contains(message([&] { S::refine_polyline(points, chaikin, S::parameters::number_of_iterations(40)); }),
+                       "max_output_points"));
   EXPECT_TRUE(
     contains(message([&] { S::Corner_cutting_scheme<FT>(frac<FT>(3, 4), frac<FT>(1, 4)); }), "0 < a < b < 1"));
   EXPECT_TRUE(contains(message([&] { S::Corner_cutting_scheme<FT>(FT(0), frac<FT>(1, 4)); }), "0 < a < b < 1"));
@@ -401,7 +552,7 @@ TYPED_TEST(Curve_schemes, bad_input_is_refused_with_a_clear_message)
   EXPECT_TRUE(contains(message([&] { S::bezier_subdivision(points, 3); }), "m d + 1"));
   EXPECT_TRUE(contains(message([&] {
                          S::bezier_subdivision(std::vector<P>(points.begin(), points.begin() + 7), 3,
-                                               S::Bezier_options().closed(true));
+                                               S::parameters::closed(true));
                        }),
                        "multiple of d"));
   EXPECT_TRUE(contains(

@@ -458,7 +458,7 @@ TEST(Butterfly_family, every_border_loop_is_refined_by_the_four_point_curve_sche
     EMesh mesh = g.mesh;
     S::subdivide(mesh, mask, CGAL::parameters::number_of_iterations(2));
     const std::vector<P> expected = S::refine_polyline(border_loop(g.mesh, V(0)), S::Four_point_scheme<FT>(w),
-                                                       S::Polyline_options().closed(true).number_of_iterations(2));
+                                                       S::parameters::closed(true).number_of_iterations(2));
     EXPECT_EQ(border_loop(mesh, V(0)), expected) << mask.name() << ", w = " << w;
   };
   check(S::Butterfly_mask<EMesh>(), FT(1) / FT(16));

@@ -20,8 +20,8 @@ int main()
   const std::vector<Point> square = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
 
   const CGAL::Subdiv::Chaikin_scheme<Kernel::FT> chaikin;
-  const std::vector<Point> refined = CGAL::Subdiv::refine_polyline(
-    square, chaikin, CGAL::Subdiv::Polyline_options().number_of_iterations(2).closed(true));
+  const std::vector<Point> refined =
+    CGAL::Subdiv::refine_polyline(square, chaikin, CGAL::Subdiv::parameters::number_of_iterations(2).closed(true));
 
   std::cout << "Chaikin, 2 levels, closed unit square: " << refined.size() << " points\n";
   for(const Point& p : refined)

@@ -26,7 +26,7 @@ int main()
   // default end rule: only the new points whose whole stencil lies on the polyline
   const CGAL::Subdiv::Four_point_scheme<FT> four_point; // w = 1/16
   const std::vector<Point> refined =
-    CGAL::Subdiv::refine_polyline(samples, four_point, CGAL::Subdiv::Polyline_options().number_of_iterations(2));
+    CGAL::Subdiv::refine_polyline(samples, four_point, CGAL::Subdiv::parameters::number_of_iterations(2));
 
   std::cout << "four-point, 2 levels, samples of y = x^3 at x = 0..6: " << refined.size() << " points\n";
   int failures = 0;

@@ -80,11 +80,10 @@ template <class Point, class Scheme>
 std::vector<Point> refine_once(const std::vector<Point>& points, const Scheme& scheme, const Refine_spec& refine)
 {
   if constexpr(Is_bezier<Scheme>::value)
-    return S::bezier_subdivision(points, scheme.degree(),
-                                 S::Bezier_options().number_of_iterations(1).closed(refine.closed));
+    return S::bezier_subdivision(points, scheme.degree(), S::parameters::number_of_iterations(1).closed(refine.closed));
   else
-    return S::refine_polyline(
-      points, scheme, S::Polyline_options().number_of_iterations(1).closed(refine.closed).end_rule(refine.end_rule));
+    return S::refine_polyline(points, scheme,
+                              S::parameters::number_of_iterations(1).closed(refine.closed).end_rule(refine.end_rule));
 }
 
 // Bezier "enough subdivisions": split until every segment is flat
@@ -93,8 +92,9 @@ std::vector<Point> refine_to_tolerance(const std::vector<Point>& control, const 
                                        const Refine_spec& refine)
 {
   if constexpr(Is_bezier<Scheme>::value)
-    return S::bezier_subdivision_to_tolerance(control, scheme.degree(), to_ft<Point_FT<Point>>(refine.tolerance),
-                                              refine.closed, S::Polyline_options().max_output_points());
+    return S::bezier_subdivision(
+      control, scheme.degree(),
+      S::parameters::flatness_tolerance(to_ft<Point_FT<Point>>(refine.tolerance)).closed(refine.closed));
   else
     throw Usage_error("--tolerance applies to bezier only");
 }
@@ -111,7 +111,7 @@ std::vector<Point> refine(const std::vector<Point>& control, const Scheme& schem
     return result;
   }
   // refuse a too large output before computing anything
-  S::internal::check_output_size(control.size(), refine.levels, S::Polyline_options().max_output_points());
+  S::internal::check_output_size(control.size(), refine.levels, S::default_max_output_points);
   // the first level is made even for --levels 0: it checks that the scheme applies
   std::vector<Point> current = refine_once(control, scheme, refine);
   if(refine.levels == 0)
@@ -145,7 +145,7 @@ void add_curvature(Figure* figure, const std::vector<Point>& points, bool closed
   if(!figure || points.size() < 3)
     return;
   const auto p = to_double_points(points);
-  figure->curvature = S::discrete_curvature(p, closed);
+  figure->curvature = S::discrete_curvature(p, S::parameters::closed(closed));
   figure->arc_length.assign(1, 0.0);
   for(std::size_t i = 1; i < p.size(); ++i)
     figure->arc_length.push_back(figure->arc_length.back() + std::sqrt(CGAL::squared_distance(p[i - 1], p[i])));

@@ -51,13 +51,13 @@ Measurements measure_bezier(std::vector<Point> current, int degree, const Refine
   Measurements result;
   for(int level = 1; level <= refine.levels; ++level) {
     std::vector<Point> next =
-      S::bezier_subdivision(current, degree, S::Bezier_options().number_of_iterations(1).closed(refine.closed));
+      S::bezier_subdivision(current, degree, S::parameters::number_of_iterations(1).closed(refine.closed));
     S::Level_measurement m;
     m.level = level;
     m.points = next.size();
     m.distance = bezier_level_distance(current, next);
     m.ratio = result.empty() ? std::numeric_limits<double>::quiet_NaN() : m.distance / result.back().distance;
-    m.max_curvature = max_of(S::discrete_curvature(next, refine.closed));
+    m.max_curvature = max_of(S::discrete_curvature(next, S::parameters::closed(refine.closed)));
     result.push_back(m);
     current.swap(next);
   }
@@ -74,11 +74,9 @@ Measurements measure(const Curve_job& job, const Input_polyline& input)
     if constexpr(Is_bezier<std::decay_t<decltype(scheme)>>::value)
       return measure_bezier(control, scheme.degree(), job.refine);
     else
-      return S::measure_levels(control, scheme,
-                               S::Polyline_options()
-                                 .number_of_iterations(job.refine.levels)
-                                 .closed(job.refine.closed)
-                                 .end_rule(job.refine.end_rule));
+      return S::measure_levels(
+        control, scheme,
+        S::parameters::number_of_iterations(job.refine.levels).closed(job.refine.closed).end_rule(job.refine.end_rule));
   });
 }
 

@@ -21,7 +21,7 @@ int main()
 {
   const std::vector<Point> square = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
   const std::vector<Point> refined = CGAL::Subdiv::refine_polyline(
-    square, CGAL::Subdiv::Chaikin_scheme<FT>(), CGAL::Subdiv::Polyline_options().number_of_iterations(2).closed(true));
+    square, CGAL::Subdiv::Chaikin_scheme<FT>(), CGAL::Subdiv::parameters::number_of_iterations(2).closed(true));
 
   // level 1 starts (1/4, 0), (3/4, 0), (1, 1/4); level 2 cuts those corners again
   const std::vector<Point> expected = {Point(FT(3) / FT(8), FT(0)), Point(FT(5) / FT(8), FT(0)),

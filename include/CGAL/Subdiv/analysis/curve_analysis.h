@@ -8,13 +8,16 @@
 /// matrix and its spectrum, limit mask, difference-scheme smoothness proof,
 /// and measurements on real polylines that check the predictions.
 
+#include <CGAL/Subdiv/analysis/Analysis_status.h>
 #include <CGAL/Subdiv/analysis/curve_local_matrix.h>
 #include <CGAL/Subdiv/analysis/curve_symbol.h>
 #include <CGAL/Subdiv/curves/Bezier_scheme.h>
 #include <CGAL/Subdiv/curves/curve_mask.h>
+#include <CGAL/Subdiv/curves/curve_parameters.h>
 #include <CGAL/Subdiv/curves/refine_polyline.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/assertions.h>
 
 #include <Eigen/Core>
@@ -49,6 +52,11 @@ struct Curve_analysis
 {
   /// `scheme.name()`
   std::string scheme;
+  /// how the analysis ended; the spectrum and the verdicts mean something only
+  /// with `Analysis_status::success`. `not_affine_invariant` (a row of `matrix`
+  /// does not sum to 1) is checked first and kept; `no_convergence` says that
+  /// Eigen's eigen-solver failed, and `eigenvalues` is then empty.
+  Analysis_status status = Analysis_status::success;
   /// offsets of the invariant window of old points (`invariant_window()`)
   int window_first = 0, window_last = 0;
   /// local subdivision matrix over the window, exact in FT (`local_subdivision_matrix()`)
@@ -93,18 +101,46 @@ inline void sort_eigenvalues(std::vector<std::complex<double>>& values)
   });
 }
 
-inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S)
+// the eigenvalues of S, sorted; empty, with `info` telling why, if Eigen's
+// solver failed (the caller decides what a failure means for its analysis)
+inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S, Eigen::ComputationInfo& info)
 {
   std::vector<std::complex<double>> values;
+  info = Eigen::Success;
   if(S.rows() == 0)
     return values;
   Eigen::EigenSolver<Eigen::MatrixXd> solver(S, false);
-  if(solver.info() != Eigen::Success)
+  info = solver.info();
+  if(info != Eigen::Success)
     return values;
   for(Eigen::Index i = 0; i < S.rows(); ++i)
     values.push_back(solver.eigenvalues()[i]);
   sort_eigenvalues(values);
   return values;
+}
+
+// the same, for callers that read a failure from the empty result
+inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& S)
+{
+  Eigen::ComputationInfo info;
+  return sorted_eigenvalues(S, info);
+}
+
+// affine invariance: every row of the local matrix sums to 1 (exactly for
+// exact FT, to a relative 1e-12 for floating point), so that moving all old
+// points moves the new ones alike
+template <class FT>
+bool rows_sum_to_one(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S)
+{
+  const FT one(1);
+  for(Eigen::Index r = 0; r < S.rows(); ++r) {
+    FT sum(0);
+    for(Eigen::Index c = 0; c < S.cols(); ++c)
+      sum += S(r, c);
+    if(!is_negligible(FT(sum - one), one))
+      return false;
+  }
+  return true;
 }
 
 template <class FT>
@@ -162,7 +198,12 @@ void snap_dyadic_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dyna
 template <class FT>
 void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
 {
-  result.eigenvalues = sorted_eigenvalues(to_double_matrix(result.matrix));
+  if(!rows_sum_to_one(result.matrix))
+    result.status = Analysis_status::not_affine_invariant;
+  Eigen::ComputationInfo info;
+  result.eigenvalues = sorted_eigenvalues(to_double_matrix(result.matrix), info);
+  if(info != Eigen::Success && result.status == Analysis_status::success)
+    result.status = Analysis_status::no_convergence;
   snap_dyadic_eigenvalues(result.matrix, result.eigenvalues);
   result.limit_mask = normalised_left_fixed_vector(result.matrix);
   const auto& ev = result.eigenvalues;
@@ -231,7 +272,11 @@ void analyse_spectrum(Curve_analysis<FT>& result, bool linear_reproduction)
  *   the regularity is decided elsewhere (four-point with w > 1/16, whose
  *   subdominant pair is complex; corner cutting with a + 1/2 > b and b - a < 1/2)
  *   the observed rate is larger, between `predicted_rate` and about
- *   \f$ 2^{-holder\_exponent} \f$.
+ *   \f$ 2^{-holder\_exponent} \f$;
+ * - `status`: `Analysis_status::not_affine_invariant` if a row of S does not
+ *   sum to 1 (a custom scheme; every scheme of the package is affine
+ *   invariant), `Analysis_status::no_convergence` if Eigen's solver failed
+ *   (`eigenvalues` is then empty). The other fields are computed as always.
  *
  * With a floating-point `FT`, divisibility by (1+z) is decided with a tolerance
  * and fails for very high orders (B-splines of degree > 40): analyse with an
@@ -412,15 +457,18 @@ inline double level_distance(const std::vector<Double_point>& old_points, const 
  * neighbours and a, b, c its side lengths (the inverse radius of the circle
  * through the three points). Open polylines get 0 at their two end points;
  * coincident neighbours give 0. Computed in double.
- * \tparam Point `Point_2` or `Point_3` of any kernel
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any kernel
+ * \param np optional named parameters: `closed` (default false).
  * \throws Bad_input for a closed polyline of fewer than 3 points
  */
-template <class Point>
-std::vector<double> discrete_curvature(const std::vector<Point>& points, bool closed)
+template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+std::vector<double> discrete_curvature(const PointRange& points,
+                                       const NamedParameters& np = parameters::default_values())
 {
-  internal::require(!closed || points.size() >= 3,
-                    "a closed polyline needs at least 3 points, got " + std::to_string(points.size()));
-  const std::vector<internal::Double_point> p = internal::to_double_points(points);
+  const bool closed = internal::read_curve_parameters(np).closed;
+  const std::vector<internal::Double_point> p = internal::to_double_points(internal::to_point_vector(points));
+  internal::require(!closed || p.size() >= 3,
+                    "a closed polyline needs at least 3 points, got " + std::to_string(p.size()));
   const std::size_t n = p.size();
   std::vector<double> curvature(n, 0.0);
   if(n < 3)
@@ -444,8 +492,8 @@ std::vector<double> discrete_curvature(const std::vector<Point>& points, bool cl
 /*!
  * \ingroup PkgSubdivAnalysis
  * refines `points` level by level with `refine_polyline()` (one call per
- * level, `options.number_of_iterations()` levels) and measures, for every
- * level k = 1, 2, ..., how far it moved from level k-1.
+ * level, `number_of_iterations` levels) and measures, for every level
+ * k = 1, 2, ..., how far it moved from level k-1.
  *
  * The distance is the sup distance \f$ \| f_k - f_{k-1} \|_\infty \f$ between
  * the piecewise-linear curves of the two levels in the scheme's own
@@ -463,33 +511,38 @@ std::vector<double> discrete_curvature(const std::vector<Point>& points, bool cl
  * B-spline (degree 1) and w = 0 four-point do not move the curve: distance 0,
  * ratio NaN.
  *
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any kernel whose
+ *         `FT` is the scheme's `Number_type`
+ * \param np optional named parameters: `number_of_iterations`, `closed`,
+ *   `end_rule` and `max_output_points`, with the defaults of `refine_polyline()`.
  * \throws Bad_input as `refine_polyline()` does.
  */
-template <class Point, class Scheme>
-std::vector<Level_measurement> measure_levels(const std::vector<Point>& points, const Scheme& scheme,
-                                              const Polyline_options& options)
+template <class PointRange, class Scheme, class NamedParameters = parameters::Default_named_parameters>
+std::vector<Level_measurement> measure_levels(const PointRange& points, const Scheme& scheme,
+                                              const NamedParameters& np = parameters::default_values())
 {
-  internal::check_polyline(points, options.closed());
-  internal::check_output_size(points.size(), options.number_of_iterations(), options.max_output_points());
+  using Point = internal::Range_point<PointRange>;
+  const internal::Curve_parameters p = internal::read_curve_parameters(np);
+  std::vector<Point> current = internal::to_point_vector(points);
+  internal::check_polyline(current, p.closed);
+  internal::check_output_size(current.size(), p.levels, p.max_output_points);
   const double sigma = CGAL::to_double(parametric_shift(scheme));
-  const bool copies_ends = !options.closed() && options.end_rule() == End_rule::keep_ends && !is_vertex_centred(scheme);
-  Polyline_options one_level = options;
-  one_level.number_of_iterations(1);
+  const bool copies_ends = !p.closed && p.end_rule == End_rule::keep_ends && !is_vertex_centred(scheme);
+  const auto one_level = parameters::number_of_iterations(1).closed(p.closed).end_rule(p.end_rule);
 
   std::vector<Level_measurement> result;
-  std::vector<Point> current = points;
   std::vector<internal::Double_point> current_d = internal::to_double_points(current);
-  for(int level = 1; level <= options.number_of_iterations(); ++level) {
-    const internal::Polyline_level<Scheme> plan(scheme, current.size(), options.closed(), options.end_rule());
+  for(int level = 1; level <= p.levels; ++level) {
+    const internal::Polyline_level<Scheme> plan(scheme, current.size(), p.closed, p.end_rule);
     std::vector<Point> next = refine_polyline(current, scheme, one_level);
     std::vector<internal::Double_point> next_d = internal::to_double_points(next);
     Level_measurement m;
     m.level = level;
     m.points = next.size();
     m.distance =
-      internal::level_distance(current_d, next_d, options.closed(), plan.first_position(), copies_ends ? 1 : 0, sigma);
+      internal::level_distance(current_d, next_d, p.closed, plan.first_position(), copies_ends ? 1 : 0, sigma);
     m.ratio = result.empty() ? std::numeric_limits<double>::quiet_NaN() : m.distance / result.back().distance;
-    const std::vector<double> curvature = discrete_curvature(next, options.closed());
+    const std::vector<double> curvature = discrete_curvature(next, parameters::closed(p.closed));
     m.max_curvature = curvature.empty() ? 0.0 : *std::max_element(curvature.begin(), curvature.end());
     result.push_back(m);
     current.swap(next);
@@ -512,12 +565,17 @@ std::vector<Level_measurement> measure_levels(const std::vector<Point>& points, 
  * open polyline with `End_rule::shrink` by `refine_polyline()`, and finds the
  * tracked point and its new window by `Polyline_level::first_position()`.
  *
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any kernel whose
+ *         `FT` is the scheme's `Number_type`
  * \throws Bad_input for fewer than 3 points, a non-finite point,
  *         `index` out of range or negative `levels`.
  */
-template <class Point, class Scheme>
-Point track_limit_point(const std::vector<Point>& closed_polygon, const Scheme& scheme, std::size_t index, int levels)
+template <class PointRange, class Scheme>
+internal::Range_point<PointRange> track_limit_point(const PointRange& polygon, const Scheme& scheme, std::size_t index,
+                                                    int levels)
 {
+  using Point = internal::Range_point<PointRange>;
+  const std::vector<Point> closed_polygon = internal::to_point_vector(polygon);
   internal::check_polyline(closed_polygon, true);
   internal::require(index < closed_polygon.size(), "index " + std::to_string(index) + " is out of range for " +
                                                      std::to_string(closed_polygon.size()) + " points");
@@ -528,8 +586,7 @@ Point track_limit_point(const std::vector<Point>& closed_polygon, const Scheme& 
   std::vector<Point> crop; // crop[k] = point at offset L + k from the tracked one
   for(long k = L; k <= R; ++k)
     crop.push_back(closed_polygon[static_cast<std::size_t>((((static_cast<long>(index) + k) % n) + n) % n)]);
-  const Polyline_options one_level =
-    Polyline_options().number_of_iterations(1).closed(false).end_rule(End_rule::shrink);
+  const auto one_level = parameters::number_of_iterations(1).closed(false).end_rule(End_rule::shrink);
   for(int level = 0; level < levels; ++level) {
     const internal::Polyline_level<Scheme> plan(scheme, crop.size(), false, End_rule::shrink);
     const std::vector<Point> next = refine_polyline(crop, scheme, one_level);

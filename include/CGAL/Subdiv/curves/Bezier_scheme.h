@@ -5,8 +5,10 @@
 
 #include <CGAL/Dimension.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Subdiv/curves/curve_parameters.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/squared_distance_2.h>
 #include <CGAL/squared_distance_3.h>
@@ -101,56 +103,28 @@ private:
 
 /*!
  * \ingroup PkgSubdivCurves
- * splits the Bezier curve with control points `control` at parameter `t` and
- * returns the control points of the pieces over [0, t] and [t, 1].
+ * splits the Bezier curve with control points `control` (any range of points)
+ * at parameter `t` and returns the control points of the pieces over [0, t]
+ * and [t, 1].
  */
-template <class Point>
-std::pair<std::vector<Point>, std::vector<Point>> de_casteljau_split(const std::vector<Point>& control,
-                                                                     const internal::Point_FT<Point>& t)
+template <class PointRange>
+std::pair<std::vector<internal::Range_point<PointRange>>, std::vector<internal::Range_point<PointRange>>>
+de_casteljau_split(const PointRange& control, const internal::Point_FT<internal::Range_point<PointRange>>& t)
 {
-  internal::require(!control.empty(), "a Bezier curve needs at least one control point");
+  using Point = internal::Range_point<PointRange>;
+  std::vector<Point> row = internal::to_point_vector(control);
+  internal::require(!row.empty(), "a Bezier curve needs at least one control point");
   const auto lerp = [&t](const Point& p, const Point& q) { return p + (q - p) * t; };
-  return internal::de_casteljau(control, lerp);
+  return internal::de_casteljau(std::move(row), lerp);
 }
 
-/// the point at parameter `t` of the Bezier curve with control points `control`
-template <class Point>
-Point bezier_point(const std::vector<Point>& control, const internal::Point_FT<Point>& t)
+/// the point at parameter `t` of the Bezier curve with control points `control` (any range of points)
+template <class PointRange>
+internal::Range_point<PointRange> bezier_point(const PointRange& control,
+                                               const internal::Point_FT<internal::Range_point<PointRange>>& t)
 {
   return de_casteljau_split(control, t).first.back();
 }
-
-/*!
- * \ingroup PkgSubdivCurves
- * Options of `bezier_subdivision()`.
- */
-class Bezier_options
-{
-public:
-  Bezier_options& number_of_iterations(int levels)
-  {
-    m_levels = levels;
-    return *this;
-  }
-  Bezier_options& closed(bool closed)
-  {
-    m_closed = closed;
-    return *this;
-  }
-  Bezier_options& max_output_points(std::size_t n)
-  {
-    m_max_output_points = n;
-    return *this;
-  }
-  int number_of_iterations() const { return m_levels; }
-  bool closed() const { return m_closed; }
-  std::size_t max_output_points() const { return m_max_output_points; }
-
-private:
-  int m_levels = 1;
-  bool m_closed = false;
-  std::size_t m_max_output_points = std::size_t(1) << 27;
-};
 
 namespace internal {
 
@@ -222,33 +196,26 @@ bool is_flat(const std::vector<Point>& segment, const Point_FT<Point>& squared_t
 
 } // namespace internal
 
-/*!
- * \ingroup PkgSubdivCurves
- * subdivides a chain of Bezier segments of degree `degree` uniformly:
- * every level splits every segment at t = 1/2. Returns the control points of
- * the refined chain (open: 2^L m d + 1 points, closed: 2^L m d).
- * \throws Bad_input for a point count that is not a chain of degree `degree`,
- *         a negative level count, or too large an output.
- */
+namespace internal {
+
+// every level splits every segment at t = 1/2
 template <class Point>
-std::vector<Point> bezier_subdivision(const std::vector<Point>& points, int degree,
-                                      const Bezier_options& options = Bezier_options())
+std::vector<Point> bezier_uniform(std::vector<Point> current, int degree, const Curve_parameters& p)
 {
-  using FT = internal::Point_FT<Point>;
+  using FT = Point_FT<Point>;
   const Bezier_scheme<FT> scheme(degree);
   const std::size_t d = static_cast<std::size_t>(degree);
-  std::size_t segments = internal::bezier_segment_count(points, degree, options.closed());
-  internal::check_output_size(points.size(), options.number_of_iterations(), options.max_output_points());
+  std::size_t segments = bezier_segment_count(current, degree, p.closed);
+  check_output_size(current.size(), p.levels, p.max_output_points);
 
-  std::vector<Point> current = points;
-  for(int level = 0; level < options.number_of_iterations(); ++level) {
+  for(int level = 0; level < p.levels; ++level) {
     std::vector<Point> next;
     next.reserve(2 * segments * d + 1);
     for(std::size_t s = 0; s < segments; ++s) {
-      const auto halves = internal::split_segment(internal::bezier_segment(current, s, d), scheme);
+      const auto halves = split_segment(bezier_segment(current, s, d), scheme);
       next.insert(next.end(), halves.begin(), halves.end() - 1); // the last is the next segment's first
     }
-    if(!options.closed())
+    if(!p.closed)
       next.push_back(current.back());
     current.swap(next);
     segments *= 2;
@@ -256,49 +223,110 @@ std::vector<Point> bezier_subdivision(const std::vector<Point>& points, int degr
   return current;
 }
 
-/*!
- * \ingroup PkgSubdivCurves
- * subdivides a chain of Bezier segments adaptively, "enough subdivisions":
- * a segment is split at t = 1/2 until every control point is within
- * `tolerance` of the chord from its first to its last control point.
- * Returns the control points of the refined chain.
- * \throws Bad_input for a non-positive tolerance, a point count that is not a
- *         chain, or when more than `max_output_points` points would be needed.
- */
+// a segment is split at t = 1/2 until it is flat
 template <class Point>
-std::vector<Point> bezier_subdivision_to_tolerance(const std::vector<Point>& points, int degree,
-                                                   const internal::Point_FT<Point>& tolerance, bool closed = false,
-                                                   std::size_t max_output_points = std::size_t(1) << 27)
+std::vector<Point> bezier_adaptive(const std::vector<Point>& points, int degree, const Point_FT<Point>& tolerance,
+                                   const Curve_parameters& p)
 {
-  using FT = internal::Point_FT<Point>;
-  internal::require(tolerance > FT(0), "the flatness tolerance must be positive");
+  using FT = Point_FT<Point>;
+  require(tolerance > FT(0), "the flatness tolerance must be positive");
   const Bezier_scheme<FT> scheme(degree);
   const std::size_t d = static_cast<std::size_t>(degree);
-  const std::size_t segments = internal::bezier_segment_count(points, degree, closed);
+  const std::size_t segments = bezier_segment_count(points, degree, p.closed);
   const FT squared_tolerance = tolerance * tolerance;
 
   std::vector<Point> result;
   for(std::size_t s = 0; s < segments; ++s) {
     // depth-first, left half first, so that the output stays in curve order
-    std::vector<std::vector<Point>> stack{internal::bezier_segment(points, s, d)};
+    std::vector<std::vector<Point>> stack{bezier_segment(points, s, d)};
     while(!stack.empty()) {
       std::vector<Point> segment = std::move(stack.back());
       stack.pop_back();
-      if(internal::is_flat(segment, squared_tolerance)) {
+      if(is_flat(segment, squared_tolerance)) {
         result.insert(result.end(), segment.begin(), segment.end() - 1);
-        internal::require(result.size() <= max_output_points, "the flatness tolerance needs more than " +
-                                                                std::to_string(max_output_points) +
-                                                                " points (the max_output_points limit)");
+        require(result.size() <= p.max_output_points, "the flatness tolerance needs more than " +
+                                                        std::to_string(p.max_output_points) +
+                                                        " points (the max_output_points limit)");
         continue;
       }
-      const auto halves = internal::split_segment(segment, scheme);
+      const auto halves = split_segment(segment, scheme);
       stack.emplace_back(halves.begin() + static_cast<long>(d), halves.end());
       stack.emplace_back(halves.begin(), halves.begin() + static_cast<long>(d) + 1);
     }
   }
-  if(!closed)
+  if(!p.closed)
     result.push_back(points.back());
   return result;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivCurves
+ * subdivides a chain of Bezier segments of degree `degree` (open: m d + 1
+ * control points, closed: m d) and returns the control points of the refined
+ * chain.
+ *
+ * Uniformly by default: every level splits every segment at t = 1/2 (open:
+ * 2^L m d + 1 points, closed: 2^L m d). With `flatness_tolerance`, "enough
+ * subdivisions" instead: a segment is split at t = 1/2 until every control
+ * point is within the tolerance of the chord from its first to its last
+ * control point.
+ *
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any CGAL kernel
+ *         (`std::vector`, `std::list`, a boost range, ...)
+ * \param np optional named parameters, from `CGAL::Subdiv::parameters` (or
+ *   CGAL's own `CGAL::parameters::number_of_iterations()`), in any order:
+ *   - `number_of_iterations` (default 1): how many uniform levels;
+ *   - `flatness_tolerance` (a number convertible to the kernel's `FT`; no
+ *     default): refine adaptively to this tolerance instead of by levels;
+ *   - `closed` (default false): whether the last segment ends at the first point;
+ *   - `max_output_points` (default `default_max_output_points`): refuse a call
+ *     whose output would have more points.
+ *
+ * `bezier_subdivision(points, 3, CGAL::Subdiv::parameters::number_of_iterations(4).closed(true))`
+ *
+ * \throws Bad_input for a point count that is not a chain of degree `degree`,
+ *         a negative level count, both `number_of_iterations` and
+ *         `flatness_tolerance`, a non-positive tolerance, or too large an output.
+ */
+template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+std::vector<internal::Range_point<PointRange>> bezier_subdivision(
+  const PointRange& points, int degree, const NamedParameters& np = parameters::default_values())
+{
+  using FT = internal::Point_FT<internal::Range_point<PointRange>>;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  const internal::Curve_parameters p = internal::read_curve_parameters(np);
+  if constexpr(is_default_parameter<NamedParameters, internal::flatness_tolerance_t>::value) {
+    return internal::bezier_uniform(internal::to_point_vector(points), degree, p);
+  } else {
+    // a fixed depth and a tolerance contradict each other: say so rather than pick one
+    internal::require(is_default_parameter<NamedParameters, internal_np::number_of_iterations_t>::value,
+                      "bezier_subdivision takes number_of_iterations or flatness_tolerance, not both");
+    const FT tolerance(get_parameter(np, internal::flatness_tolerance_t()));
+    return internal::bezier_adaptive(internal::to_point_vector(points), degree, tolerance, p);
+  }
+}
+
+/*!
+ * \ingroup PkgSubdivCurves
+ * subdivides a chain of Bezier segments adaptively to `tolerance`: the same
+ * as `bezier_subdivision(points, degree, np.flatness_tolerance(tolerance))`,
+ * for a tolerance that the call always has.
+ *
+ * \param np optional named parameters: `closed` and `max_output_points`, as
+ *   for `bezier_subdivision()`.
+ * \throws Bad_input for a non-positive tolerance, a point count that is not a
+ *         chain, or when more than `max_output_points` points would be needed.
+ */
+template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+std::vector<internal::Range_point<PointRange>> bezier_subdivision_to_tolerance(
+  const PointRange& points, int degree, const internal::Point_FT<internal::Range_point<PointRange>>& tolerance,
+  const NamedParameters& np = parameters::default_values())
+{
+  return internal::bezier_adaptive(internal::to_point_vector(points), degree, tolerance,
+                                   internal::read_curve_parameters(np));
 }
 
 } // namespace Subdiv

@@ -3,9 +3,11 @@
 #ifndef CGAL_SUBDIV_UNIFORM_BSPLINE_SCHEME_H
 #define CGAL_SUBDIV_UNIFORM_BSPLINE_SCHEME_H
 
+#include <CGAL/Subdiv/curves/curve_parameters.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/lane_riesenfeld.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
 #include <string>
@@ -90,23 +92,41 @@ private:
 
 /*!
  * \ingroup PkgSubdivCurves
- * One level of Lane-Riesenfeld refinement applied to points directly: one
+ * Lane-Riesenfeld refinement applied to points directly: every level is one
  * doubling, then `degree` averagings of neighbours. For a closed polyline the
- * result equals one level of `refine_polyline()` with
- * `Uniform_bspline_scheme(degree)`; for an open one it equals `End_rule::shrink`.
- * Mostly useful to see (and test) that the masks are what the algorithm does.
+ * result equals `refine_polyline()` with `Uniform_bspline_scheme(degree)`; for
+ * an open one it equals `End_rule::shrink`. Mostly useful to see (and test)
+ * that the masks are what the algorithm does.
+ *
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any CGAL kernel
+ * \param np optional named parameters, in any order: `number_of_iterations`
+ *   (default 1), `closed` (default false) and `max_output_points` (default
+ *   `default_max_output_points`), as for `refine_polyline()`.
+ * \throws Bad_input for a degree out of range, fewer than 2 points, a negative
+ *         level count or too large an output.
  */
-template <class Point>
-std::vector<Point> lane_riesenfeld_refine(const std::vector<Point>& points, int degree, bool closed)
+template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+std::vector<internal::Range_point<PointRange>> lane_riesenfeld_refine(
+  const PointRange& points, int degree, const NamedParameters& np = parameters::default_values())
 {
+  using Point = internal::Range_point<PointRange>;
   using FT = internal::Point_FT<Point>;
   Uniform_bspline_scheme<FT> check_degree(degree);
   (void)check_degree;
-  internal::require(points.size() >= 2, "a polyline needs at least 2 points");
-  const auto midpoint = [](const Point& p, const Point& q) { return p + (q - p) / FT(2); };
-  if(closed)
-    return internal::lane_riesenfeld_closed(points, degree, midpoint);
-  return internal::lane_riesenfeld_open(points, degree, midpoint);
+  const internal::Curve_parameters p = internal::read_curve_parameters(np);
+  std::vector<Point> current = internal::to_point_vector(points);
+  internal::require(current.size() >= 2, "a polyline needs at least 2 points");
+  internal::check_output_size(current.size(), p.levels, p.max_output_points);
+  const auto midpoint = [](const Point& a, const Point& b) { return a + (b - a) / FT(2); };
+  for(int level = 0; level < p.levels; ++level) {
+    // an open polyline shrinks on every level: say so, as refine_polyline() does
+    if(level > 0)
+      internal::require(current.size() >= 2, "level " + std::to_string(level + 1) + ": the polyline shrank to " +
+                                               std::to_string(current.size()) + " points");
+    current = p.closed ? internal::lane_riesenfeld_closed(current, degree, midpoint)
+                       : internal::lane_riesenfeld_open(current, degree, midpoint);
+  }
+  return current;
 }
 
 } // namespace Subdiv

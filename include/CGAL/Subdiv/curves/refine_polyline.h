@@ -4,8 +4,10 @@
 #define CGAL_SUBDIV_REFINE_POLYLINE_H
 
 #include <CGAL/Subdiv/curves/curve_mask.h>
+#include <CGAL/Subdiv/curves/curve_parameters.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
 #include <cstddef>
@@ -14,68 +16,6 @@
 
 namespace CGAL {
 namespace Subdiv {
-
-/*!
- * \ingroup PkgSubdivCurves
- * What happens at the two ends of an open polyline.
- */
-enum class End_rule {
-  /// Only the new points whose whole stencil lies on the polyline are made, as
-  /// in the lecture notes: the polyline loses points at both ends on every
-  /// level. The cubic B-spline limit starts near the second point (at
-  /// (p0 + 4 p1 + p2) / 6); the four-point limit runs from the third point to the
-  /// third from last.
-  shrink,
-  /// The end points are kept and the limit runs from the first to the last
-  /// point. Primal symmetric schemes (odd-degree B-splines, four-point) see the
-  /// polyline continued by point reflection, p_-j = 2 p_0 - p_j (this gives the
-  /// cubic B-spline end rule p'_0 = p_0, the "natural" end); other schemes
-  /// (Chaikin, corner cutting, even-degree B-splines) make the points of
-  /// `shrink` and add the two end points unchanged.
-  keep_ends
-};
-
-/*!
- * \ingroup PkgSubdivCurves
- * Options of `refine_polyline()`, set in a chain:
- * `Polyline_options().number_of_iterations(3).closed(true)`.
- */
-class Polyline_options
-{
-public:
-  Polyline_options& number_of_iterations(int levels)
-  {
-    m_levels = levels;
-    return *this;
-  }
-  Polyline_options& closed(bool closed)
-  {
-    m_closed = closed;
-    return *this;
-  }
-  Polyline_options& end_rule(End_rule rule)
-  {
-    m_end_rule = rule;
-    return *this;
-  }
-  /// refuse, before allocating, any call whose output would have more points
-  Polyline_options& max_output_points(std::size_t n)
-  {
-    m_max_output_points = n;
-    return *this;
-  }
-
-  int number_of_iterations() const { return m_levels; }
-  bool closed() const { return m_closed; }
-  End_rule end_rule() const { return m_end_rule; }
-  std::size_t max_output_points() const { return m_max_output_points; }
-
-private:
-  int m_levels = 1;
-  bool m_closed = false;
-  End_rule m_end_rule = End_rule::shrink;
-  std::size_t m_max_output_points = std::size_t(1) << 27;
-};
 
 namespace internal {
 
@@ -221,37 +161,58 @@ void check_polyline(const Points& points, bool closed)
 
 } // namespace internal
 
+namespace internal {
+
+// one level of `scheme` on `points`, by the plan of `Polyline_level`
+template <class Point, class Scheme>
+std::vector<Point> refine_polyline_once(const std::vector<Point>& points, const Scheme& scheme, bool closed,
+                                        End_rule end_rule)
+{
+  const Polyline_level<Scheme> plan(scheme, points.size(), closed, end_rule);
+  std::vector<Point> next;
+  next.reserve(plan.size());
+  for(std::size_t j = 0; j < plan.size(); ++j) {
+    Point_sum<Point> sum(points);
+    plan.stencil(j, sum);
+    next.push_back(sum.point());
+  }
+  return next;
+}
+
+} // namespace internal
+
 /*!
  * \ingroup PkgSubdivCurves
  * refines a polyline `number_of_iterations` times with the rules of `scheme`
  * and returns the new points. The input is left unchanged.
  *
- * \tparam Point `Point_2` or `Point_3` of any CGAL kernel whose `FT` is the
- *         scheme's `Number_type`; with an exact kernel the result is exact.
+ * \tparam PointRange a range of `Point_2` or `Point_3` of any CGAL kernel
+ *         whose `FT` is the scheme's `Number_type` (`std::vector`, `std::list`,
+ *         a boost range, ...); with an exact kernel the result is exact.
  * \tparam Scheme a model of `CurveSubdivisionScheme`
+ * \param np optional named parameters, from `CGAL::Subdiv::parameters` (or
+ *   CGAL's own `CGAL::parameters::number_of_iterations()`), in any order:
+ *   - `number_of_iterations` (default 1): how many levels;
+ *   - `closed` (default false): whether the last point joins the first;
+ *   - `end_rule` (default `End_rule::shrink`): the ends of an open polyline;
+ *   - `max_output_points` (default `default_max_output_points`): a call
+ *     whose output would have more points is refused before it allocates.
+ *
+ * `refine_polyline(points, scheme, CGAL::Subdiv::parameters::number_of_iterations(3).closed(true))`
+ *
  * \throws Bad_input for an empty, too short or non-finite polyline, a negative
  *         level count, or an output larger than `max_output_points`.
  */
-template <class Point, class Scheme>
-std::vector<Point> refine_polyline(const std::vector<Point>& points, const Scheme& scheme,
-                                   const Polyline_options& options = Polyline_options())
+template <class PointRange, class Scheme, class NamedParameters = parameters::Default_named_parameters>
+std::vector<internal::Range_point<PointRange>> refine_polyline(const PointRange& points, const Scheme& scheme,
+                                                               const NamedParameters& np = parameters::default_values())
 {
-  internal::check_polyline(points, options.closed());
-  internal::check_output_size(points.size(), options.number_of_iterations(), options.max_output_points());
-
-  std::vector<Point> current = points;
-  std::vector<Point> next;
-  for(int level = 0; level < options.number_of_iterations(); ++level) {
-    const internal::Polyline_level<Scheme> plan(scheme, current.size(), options.closed(), options.end_rule());
-    next.clear();
-    next.reserve(plan.size());
-    for(std::size_t j = 0; j < plan.size(); ++j) {
-      internal::Point_sum<Point> sum(current);
-      plan.stencil(j, sum);
-      next.push_back(sum.point());
-    }
-    current.swap(next);
-  }
+  const internal::Curve_parameters p = internal::read_curve_parameters(np);
+  std::vector<internal::Range_point<PointRange>> current = internal::to_point_vector(points);
+  internal::check_polyline(current, p.closed);
+  internal::check_output_size(current.size(), p.levels, p.max_output_points);
+  for(int level = 0; level < p.levels; ++level)
+    current = internal::refine_polyline_once(current, scheme, p.closed, p.end_rule);
   return current;
 }
 
