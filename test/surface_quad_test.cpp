@@ -338,7 +338,8 @@ TEST(DooSabin, quad_weights_are_the_biquadratic_bspline_weights)
   std::vector<std::vector<VX>> id;
   const Exact_mesh mesh = grid(4, id);
   Stencil ours;
-  S::Doo_sabin_mask<Exact_mesh>().corner_node(S::Corner_view<Exact_mesh>(mesh, halfedge(id[1][1], id[2][1], mesh).first), ours);
+  S::Doo_sabin_mask<Exact_mesh>().corner_node(
+    S::Corner_view<Exact_mesh>(mesh, halfedge(id[1][1], id[2][1], mesh).first), ours);
   EXPECT_EQ(ours.size(), 4u);
   EXPECT_EQ(ours.weight(id[2][1]), FX(9) / FX(16));
   EXPECT_EQ(ours.weight(id[1][1]), FX(3) / FX(16));

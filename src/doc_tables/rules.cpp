@@ -83,7 +83,8 @@ std::vector<Rule> rules_of(int n, bool boundary)
         record("corner with a single face", "The new vertex of corner 3 of the corner face, the corner of the mesh",
                [&](auto& acc) { mask.corner_node(S::Corner_view<Mesh>(mesh, mesh.prev(mesh.prev(h))), acc); });
     }
-  } else if constexpr(Traits::analysis_steps == 2) { // sqrt3 split: vertex and face points; the border on refining steps
+  } else if constexpr(Traits::analysis_steps ==
+                      2) { // sqrt3 split: vertex and face points; the border on refining steps
     if(boundary) {
       record("border vertex (refining step)",
              "The new position of the centre (label 0) on a step that refines the border",
@@ -100,7 +101,8 @@ std::vector<Rule> rules_of(int n, bool boundary)
       record("vertex", "The new position of the centre (label 0)",
              [&](auto& acc) { mask.vertex_node(S::Vertex_view<Mesh>(mesh, mesh.source(h)), acc); });
     }
-    record("face", "The new vertex of the face (0, 1, 2)", [&](auto& acc) { mask.face_node(S::Face_view<Mesh>(mesh, mesh.face(h)), acc); });
+    record("face", "The new vertex of the face (0, 1, 2)",
+           [&](auto& acc) { mask.face_node(S::Face_view<Mesh>(mesh, mesh.face(h)), acc); });
   } else {
     const std::string prefix = boundary ? "border " : "";
     record(prefix + "vertex", "The new position of the centre (label 0)",
