@@ -16,9 +16,10 @@
 set -euo pipefail
 
 # libtbb-dev: optional for users of the library, installed here so that the
-# tests run the multi-threaded paths (threads(n) runs in one thread without it)
+# tests run the multi-threaded paths (threads(n) runs in one thread without it);
+# clang-format and git: the test format_check (src/scripts/check_format.sh)
 readonly REQUIRED_PACKAGES=(cmake g++ make libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
-                            libgtest-dev libboost-dev libtbb-dev python3)
+                            libgtest-dev libboost-dev libtbb-dev python3 clang-format git)
 
 # Test mode (CI), doc/ci.md. -Wall -Wextra are always on for the project's own
 # targets; this adds -Werror (SUBDIV_WARNINGS_AS_ERRORS). OFF until the headers
