@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "threads_test_utils.h"
+
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
@@ -140,6 +142,7 @@ const auto catmull_clark = [](Mesh& m, const auto& np) { S::catmull_clark_subdiv
 
 TEST(Parallel, loop_is_the_same_with_any_number_of_threads)
 {
+  SUBDIV_REQUIRE_THREADS();
   for(const int hole : {0, 13})
     for(int levels = 1; levels <= 3; ++levels)
       expect_same_with_any_thread_count(torus(40, 30, true, hole), loop, levels);
@@ -147,6 +150,7 @@ TEST(Parallel, loop_is_the_same_with_any_number_of_threads)
 
 TEST(Parallel, catmull_clark_is_the_same_with_any_number_of_threads)
 {
+  SUBDIV_REQUIRE_THREADS();
   for(const int hole : {0, 17}) {
     for(int levels = 1; levels <= 3; ++levels)
       expect_same_with_any_thread_count(torus(40, 30, false, hole), catmull_clark, levels);
@@ -157,6 +161,7 @@ TEST(Parallel, catmull_clark_is_the_same_with_any_number_of_threads)
 
 TEST(Parallel, other_schemes_are_the_same_with_any_number_of_threads)
 {
+  SUBDIV_REQUIRE_THREADS();
   const Mesh triangles = torus(30, 30, true, 11), quads = torus(30, 30, false, 11);
   expect_same_with_any_thread_count(
     triangles, [](Mesh& m, const auto& np) { S::sqrt3_subdivision(m, np); }, 3);
@@ -168,6 +173,7 @@ TEST(Parallel, other_schemes_are_the_same_with_any_number_of_threads)
 
 TEST(Parallel, edge_splits_beside_the_resize_are_the_same_with_any_number_of_threads)
 {
+  SUBDIV_REQUIRE_THREADS();
 #if defined(NDEBUG) && !defined(_GLIBCXX_ASSERTIONS)
   // with threads, the resize runs beside the snapshot and the masks here
   EXPECT_TRUE(S::internal::resize_beside_reads);
@@ -265,6 +271,7 @@ TEST(Parallel, fast_path_equals_the_generic_path)
 
 TEST(Parallel, stencil_tables_are_the_same_with_any_number_of_threads)
 {
+  SUBDIV_REQUIRE_THREADS();
   const auto same = [](const S::Stencil_table<double>& a, const S::Stencil_table<double>& b) {
     ASSERT_EQ(a.number_of_stencils(), b.number_of_stencils());
     ASSERT_EQ(a.number_of_terms(), b.number_of_terms());

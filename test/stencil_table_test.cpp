@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh_test_utils.h"
+#include "threads_test_utils.h"
 
 #include <array>
 #include <cmath>
@@ -248,64 +249,91 @@ TEST(Stencil_table, limit_tables_give_subdivide_then_project_to_limit)
   }
 }
 
-TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with_any_number_of_threads)
+namespace {
+
+// make_stencil_table makes each row once, in one pass (in parallel: in chunks
+// of rows, copied into place): the table must be the level tables composed by
+// Stencil_table::then, to the bit, whatever the number of threads. Grids large
+// enough for many chunks, with a border.
+void expect_same_table(const S::Stencil_table<double>& a, const S::Stencil_table<double>& b, const std::string& what)
 {
-  // make_stencil_table makes each row once, in one pass (in parallel: in
-  // chunks of rows, copied into place): the table must be the level tables
-  // composed by Stencil_table::then, to the bit, whatever the number of
-  // threads. Grids large enough for many chunks, with a border.
-  const auto same = [](const S::Stencil_table<double>& a, const S::Stencil_table<double>& b, const std::string& what) {
-    ASSERT_EQ(a.number_of_stencils(), b.number_of_stencils()) << what;
-    ASSERT_EQ(a.number_of_terms(), b.number_of_terms()) << what;
-    ASSERT_EQ(a.number_of_sources(), b.number_of_sources()) << what;
-    for(std::size_t i = 0; i < a.number_of_stencils(); ++i)
-      ASSERT_EQ(a.stencil_end(i), b.stencil_end(i)) << what << ", stencil " << i;
-    for(std::size_t t = 0; t < a.number_of_terms(); ++t) {
-      ASSERT_EQ(a.source(t), b.source(t)) << what << ", term " << t;
-      const double x = a.weight(t), y = b.weight(t);
-      ASSERT_EQ(std::memcmp(&x, &y, sizeof x), 0) << what << ", term " << t << ": " << x << " vs " << y;
-    }
-  };
-  // one level's own table, and its topology
-  const auto level_table = [](Double_mesh& work, const auto& mask) {
-    S::internal::Composed_level<double> level{nullptr, num_vertices(work)};
-    const auto points = get(CGAL::vertex_point, work);
-    S::internal::refine_level(work, mask, S::internal::No_points<decltype(points)>{points},
-                              S::internal::Parallel_loop(1), level);
-    return level.table;
-  };
-  const auto check = [&](const Double_mesh& coarse, const auto& mask, int levels) {
-    Double_mesh work = coarse;
-    auto composed = level_table(work, mask);
-    for(int level = 1; level < levels; ++level)
-      composed = composed.then(level_table(work, mask));
-    for(const int threads : {1, 2, 0})
-      same(S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).threads(threads)), composed,
-           mask.name() + ", " + std::to_string(levels) + " levels, threads " + std::to_string(threads));
-    Double_mesh refined;
-    same(
-      S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).refined_mesh(refined).threads(2)),
-      composed, mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
-    // the refined mesh: the connectivity subdivide() makes, link for link
-    Double_mesh reference = coarse;
-    S::subdivide(reference, mask, CGAL::parameters::number_of_iterations(levels));
-    ASSERT_TRUE(CGAL::is_valid_polygon_mesh(refined)) << mask.name();
-    ASSERT_EQ(refined.number_of_halfedges(), reference.number_of_halfedges()) << mask.name();
-    for(auto h : halfedges(reference)) {
-      ASSERT_EQ(refined.next(h), reference.next(h)) << mask.name();
-      ASSERT_EQ(refined.target(h), reference.target(h)) << mask.name();
-      ASSERT_EQ(refined.face(h), reference.face(h)) << mask.name();
-    }
-    for(auto v : vertices(reference))
-      ASSERT_EQ(refined.halfedge(v), reference.halfedge(v)) << mask.name();
-  };
+  ASSERT_EQ(a.number_of_stencils(), b.number_of_stencils()) << what;
+  ASSERT_EQ(a.number_of_terms(), b.number_of_terms()) << what;
+  ASSERT_EQ(a.number_of_sources(), b.number_of_sources()) << what;
+  for(std::size_t i = 0; i < a.number_of_stencils(); ++i)
+    ASSERT_EQ(a.stencil_end(i), b.stencil_end(i)) << what << ", stencil " << i;
+  for(std::size_t t = 0; t < a.number_of_terms(); ++t) {
+    ASSERT_EQ(a.source(t), b.source(t)) << what << ", term " << t;
+    const double x = a.weight(t), y = b.weight(t);
+    ASSERT_EQ(std::memcmp(&x, &y, sizeof x), 0) << what << ", term " << t << ": " << x << " vs " << y;
+  }
+}
+
+// one level's own table, and its topology
+template <class Mask>
+S::Stencil_table<double> level_table(Double_mesh& work, const Mask& mask)
+{
+  S::internal::Composed_level<double> level{nullptr, num_vertices(work)};
+  const auto points = get(CGAL::vertex_point, work);
+  S::internal::refine_level(work, mask, S::internal::No_points<decltype(points)>{points}, S::internal::Parallel_loop(1),
+                            level);
+  return level.table;
+}
+
+// the table made with each number of threads, and with the refined mesh (with
+// the first number of threads), against the level tables composed
+template <class Mask>
+void expect_level_tables_composed(const Double_mesh& coarse, const Mask& mask, int levels,
+                                  const std::vector<int>& threads)
+{
+  Double_mesh work = coarse;
+  auto composed = level_table(work, mask);
+  for(int level = 1; level < levels; ++level)
+    composed = composed.then(level_table(work, mask));
+  for(const int n : threads)
+    expect_same_table(S::make_stencil_table(coarse, mask, S::parameters::number_of_iterations(levels).threads(n)),
+                      composed, mask.name() + ", " + std::to_string(levels) + " levels, threads " + std::to_string(n));
+  Double_mesh refined;
+  expect_same_table(
+    S::make_stencil_table(coarse, mask,
+                          S::parameters::number_of_iterations(levels).refined_mesh(refined).threads(threads.front())),
+    composed, mask.name() + ", " + std::to_string(levels) + " levels, with the refined mesh");
+  // the refined mesh: the connectivity subdivide() makes, link for link
+  Double_mesh reference = coarse;
+  S::subdivide(reference, mask, CGAL::parameters::number_of_iterations(levels));
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(refined)) << mask.name();
+  ASSERT_EQ(refined.number_of_halfedges(), reference.number_of_halfedges()) << mask.name();
+  for(auto h : halfedges(reference)) {
+    ASSERT_EQ(refined.next(h), reference.next(h)) << mask.name();
+    ASSERT_EQ(refined.target(h), reference.target(h)) << mask.name();
+    ASSERT_EQ(refined.face(h), reference.face(h)) << mask.name();
+  }
+  for(auto v : vertices(reference))
+    ASSERT_EQ(refined.halfedge(v), reference.halfedge(v)) << mask.name();
+}
+
+void expect_level_tables_composed_for_every_host(const std::vector<int>& threads)
+{
   const Double_mesh triangles = bumpy_grid(true, 40), quads = bumpy_grid(false, 40);
   for(int levels = 1; levels <= 3; ++levels) {
-    check(triangles, S::Loop_mask<Double_mesh>(), levels);
-    check(quads, S::Catmull_clark_mask<Double_mesh>(), levels);
-    check(triangles, S::Catmull_clark_mask<Double_mesh>(), levels);
-    check(triangles, S::Modified_butterfly_mask<Double_mesh>(), levels);
-    check(triangles, S::Sqrt3_mask<Double_mesh>(), levels);
-    check(quads, S::Doo_sabin_mask<Double_mesh>(), levels);
+    expect_level_tables_composed(triangles, S::Loop_mask<Double_mesh>(), levels, threads);
+    expect_level_tables_composed(quads, S::Catmull_clark_mask<Double_mesh>(), levels, threads);
+    expect_level_tables_composed(triangles, S::Catmull_clark_mask<Double_mesh>(), levels, threads);
+    expect_level_tables_composed(triangles, S::Modified_butterfly_mask<Double_mesh>(), levels, threads);
+    expect_level_tables_composed(triangles, S::Sqrt3_mask<Double_mesh>(), levels, threads);
+    expect_level_tables_composed(quads, S::Doo_sabin_mask<Double_mesh>(), levels, threads);
   }
+}
+
+} // namespace
+
+TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit)
+{
+  expect_level_tables_composed_for_every_host({1});
+}
+
+TEST(Stencil_table, double_tables_are_the_level_tables_composed_bit_for_bit_with_any_number_of_threads)
+{
+  SUBDIV_REQUIRE_THREADS();
+  expect_level_tables_composed_for_every_host({2, 0});
 }

@@ -207,10 +207,12 @@ TEST(SurfaceAnalysisLoop, border_vertices)
     const double interior = 3.0 / 8 + std::cos(pi / k) / 4;
     EXPECT_NEAR(a.subdominant.real(), (std::max)(0.5, interior), 1e-12);
     EXPECT_EQ(a.c1, k <= 5);
-    if(k == 6)
+    if(k == 6) {
       EXPECT_FALSE(a.c1_necessary);
-    if(k >= 7)
+    }
+    if(k >= 7) {
       EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_regular);
+    }
   }
 }
 
@@ -252,12 +254,15 @@ TEST(SurfaceAnalysisCatmullClark, border_vertices)
     expect_consistent(a);
     EXPECT_EQ(a.limit_mask_centre(), FT(2) / FT(3));
     EXPECT_EQ(a.c1, k == 2 || k == 3);
-    if(k == 1)
+    if(k == 1) {
       EXPECT_FALSE(a.c1_necessary);
-    if(k == 4)
+    }
+    if(k == 4) {
       EXPECT_FALSE(a.extended_spectrum_ok);
-    if(k >= 5)
+    }
+    if(k >= 5) {
       EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_regular);
+    }
   }
 }
 
@@ -275,8 +280,9 @@ TEST(SurfaceAnalysisDooSabin, face_eigenvalues_and_limit_mask)
     // the central n-gon alone is invariant: its limit is its centroid
     for(int i = 0; i < 4 * n; ++i)
       EXPECT_NEAR(CGAL::to_double(a.limit_mask[i]), i < n ? 1.0 / n : 0.0, 1e-15);
-    if(a.exact)
+    if(a.exact) {
       EXPECT_EQ(a.limit_mask_centre(), FT(1) / FT(n));
+    }
     // 1, 1/2, 1/2, 1/4 ... (the weights were designed for it)
     EXPECT_NEAR(a.eigenvalues[1].real(), 0.5, 1e-12);
     EXPECT_NEAR(a.eigenvalues[2].real(), 0.5, 1e-12);
@@ -403,13 +409,15 @@ TEST(SurfaceAnalysisDooSabin, border_faces)
     EXPECT_EQ(a.subdominant.imag(), 0.0);
     EXPECT_EQ(a.subdominant_multiplicity, k == 1 ? 2 : 1);
     EXPECT_NEAR(a.second_subdominant.real(), k == 1 ? 0.75 : 0.5, 1e-12);
-    if(k == 3)
+    if(k == 3) {
       EXPECT_EQ(a.subdominant, std::complex<double>(2.0 / 3, 0)); // confirmed exactly
+    }
     EXPECT_LT(std::abs(a.eigenvalues[3]), a.second_subdominant.real() - 1e-3);
     // the second tangent mask is the border tangent (the Chaikin pair's 1/2)
-    if(k >= 2)
+    if(k >= 2) {
       for(std::size_t i = 0; i < size; ++i)
         EXPECT_NEAR(std::abs(a.tangent_mask[1][i]), i == 0 || i == last ? std::sqrt(0.5) : 0.0, 1e-9);
+    }
     EXPECT_TRUE(a.c1_necessary);
     EXPECT_TRUE(a.extended_spectrum_ok);
     EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::regular_injective);
@@ -475,12 +483,15 @@ TEST(SurfaceAnalysisButterfly, border_vertices)
       SCOPED_TRACE(describe(*a));
       expect_consistent(*a);
       EXPECT_EQ(a->c1, k == 2 || k == 3);
-      if(k == 1)
+      if(k == 1) {
         EXPECT_FALSE(a->c1_necessary);
-      if(k == 4 || k == 5 || k == 6)
+      }
+      if(k == 4 || k == 5 || k == 6) {
         EXPECT_EQ(a->characteristic_map, Characteristic_map_verdict::not_regular);
-      if(k >= 7)
+      }
+      if(k >= 7) {
         EXPECT_EQ(a->characteristic_map, Characteristic_map_verdict::not_injective);
+      }
     }
   }
 }
@@ -549,8 +560,9 @@ TEST(SurfaceAnalysisSqrt3, border_vertices)
       third = third || e.first == FT(1) / FT(3);
     EXPECT_EQ(third, k != 6);
     EXPECT_EQ(a.c1, k <= 5);
-    if(k == 6)
+    if(k == 6) {
       EXPECT_FALSE(a.c1_necessary);
+    }
     if(k >= 7) {
       EXPECT_TRUE(a.c1_necessary);
       EXPECT_NEAR(a.second_subdominant.real(), (2 + 2 * std::cos(2 * pi / k)) / 9, 1e-12);
@@ -615,15 +627,18 @@ TEST(SurfaceAnalysisInterpolatingSqrt3, border_vertices)
     EXPECT_EQ(a.limit_mask_centre(), FT(1));
     EXPECT_NEAR(a.subdominant.real(), 1.0 / 3, 1e-12);
     EXPECT_EQ(a.subdominant.imag(), 0.0);
-    if(k == 1)
+    if(k == 1) {
       EXPECT_EQ(a.subdominant, std::complex<double>(1.0 / 3, 0)); // confirmed exactly
+    }
     EXPECT_NEAR(a.second_subdominant.real(), second[k - 1], 1e-6);
     EXPECT_TRUE(a.c1_necessary);
     EXPECT_EQ(a.c1, k <= 3);
-    if(k >= 4 && k <= 6)
+    if(k >= 4 && k <= 6) {
       EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_regular);
-    if(k >= 7)
+    }
+    if(k >= 7) {
       EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_injective);
+    }
   }
 }
 

@@ -185,8 +185,9 @@ void expect_affine_stencils(const Mask& mask, const EMesh& mesh, const std::stri
     Recorder s;
     mask.vertex_node(S::vertex_view(mask, mesh, v), s);
     EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", vertex " << v.idx();
-    if(mask.is_interpolating())
+    if(mask.is_interpolating()) {
       EXPECT_EQ(s.weight(v), FT(1));
+    }
   }
   for(auto e : edges(mesh)) {
     const Recorder s = edge_stencil(mask, mesh, halfedge(e, mesh));

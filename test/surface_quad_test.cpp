@@ -544,8 +544,9 @@ TEST(DooSabin, border_is_chaikins_refinement_of_the_border_polygon)
     for(auto v : vertices(refined))
       points.insert(refined.point(v));
     for(auto v : vertices(mesh))
-      if(CGAL::is_border(v, mesh) && corner(v))
+      if(CGAL::is_border(v, mesh) && corner(v)) {
         EXPECT_EQ(points.count(mesh.point(v)), 1u) << name;
+      }
   }
 }
 

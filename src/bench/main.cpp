@@ -68,13 +68,6 @@ void out(const std::string& text)
   document += text;
 }
 
-std::string format(const char* pattern, double x)
-{
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, x);
-  return text;
-}
-
 // --- the libraries ------------------------------------------------------------------
 
 enum Peer { ours, cgal, openmesh, osd, number_of_peers };

@@ -7,25 +7,43 @@
 #   bash src/scripts/quickstart.sh deps   # only install what is missing
 #
 # Options (after the mode):
-#   --with-peers   also install the optional peers (OpenMesh, OpenSubdiv)
-#   --jobs N       parallel build and test jobs (default: nproc; or set JOBS=N)
+#   --with-peers      also install the optional peers (OpenMesh, OpenSubdiv)
+#   --jobs N          parallel build and test jobs (default: nproc; or set JOBS=N)
+#   --no-sanitizers   test mode: skip the sanitizer job (build-asan/)
 #
 # The build is an optimised one that keeps CGAL's preconditions and assertions
 # (Release with -O2, no NDEBUG) in build/ at the root of the checkout. Running it
-# again only redoes what changed. In test mode the exit code is ctest's.
+# again only redoes what changed. In test mode the exit code is ctest's; before
+# the tests, a subset of them runs under ASan + UBSan in build-asan/ (doc/ci.md).
 set -euo pipefail
 
 # libtbb-dev: optional for users of the library, installed here so that the
-# tests run the multi-threaded paths (threads(n) runs in one thread without it)
+# tests run the multi-threaded paths (threads(n) runs in one thread without it);
+# clang-format and git: the test format_check (src/scripts/check_format.sh)
 readonly REQUIRED_PACKAGES=(cmake g++ make libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
-                            libgtest-dev libboost-dev libtbb-dev python3)
+                            libgtest-dev libboost-dev libtbb-dev python3 clang-format git)
+
+# Test mode (CI), doc/ci.md. -Wall -Wextra are always on for the project's own
+# targets; this adds -Werror (SUBDIV_WARNINGS_AS_ERRORS). OFF until the headers
+# in include/CGAL/Subdiv/ compile without warnings; until then a warning reported
+# in a file outside include/ fails test mode all the same (check_warnings below).
+readonly WARNINGS_AS_ERRORS_IN_TEST=OFF
+
+# The sanitizer job of test mode: these targets built in build-asan/ with
+# ASan + UBSan (-O1, assertions on), and the tests with these ctest labels
+# (every GoogleTest executable is labelled with its name, the command-line
+# tests with cli) run before the main tests. Measured on 2 cores, -j2 (doc/ci.md,
+# which says why these): about N minutes more than the main build and tests.
+readonly SANITIZER_TARGETS=(cgal-subdiv parallel_test stencil_table_test)
+readonly SANITIZER_LABELS=(cli parallel_test stencil_table_test)
 readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev)
 
 say() { printf '==> %s\n' "$*"; }
 die() { printf 'quickstart: error: %s\n' "$*" >&2; exit 2; }
 
 usage() {
-  sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
+  # the comment at the top of this file
+  sed -n '2,/^set -euo pipefail$/p' "$0" | sed -n '/^#/s/^# \{0,1\}//p'
   exit "${1:-0}"
 }
 
@@ -39,10 +57,12 @@ case $mode in
 esac
 
 with_peers=0
+sanitizers=1
 jobs=${JOBS:-}
 while (($#)); do
   case $1 in
     --with-peers) with_peers=1 ;;
+    --no-sanitizers) sanitizers=0 ;;
     --jobs) [[ $# -ge 2 ]] || die "--jobs needs a number"; jobs=$2; shift ;;
     --jobs=*) jobs=${1#--jobs=} ;;
     -h | --help) usage 0 ;;
@@ -57,6 +77,7 @@ fi
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=$root/build
+build_asan=$root/build-asan
 cd "$root"
 
 # --- dependencies ------------------------------------------------------------
@@ -94,9 +115,57 @@ install_missing() {
 
 # --- build -------------------------------------------------------------------
 configure() {
-  say "configuring $build (Release, -O2, assertions on)"
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O2 >/dev/null ||
+  local werror=OFF
+  [[ $mode == test ]] && werror=$WARNINGS_AS_ERRORS_IN_TEST
+  say "configuring $build (Release, -O2, assertions on, -Wall -Wextra, warnings as errors: $werror)"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O2 \
+    -DSUBDIV_WARNINGS_AS_ERRORS="$werror" >/dev/null ||
     die "cmake configuration failed (run: cmake -S . -B build to see why)"
+}
+
+# While -Werror is off: the compiler warnings of the build log $1 that are
+# reported in a file of ours outside include/ (src/, test/, doc/examples/) fail
+# test mode; those in include/CGAL/Subdiv/ are counted only. A rebuild reports
+# only what it recompiles, so a run on a fresh build/ (CI) sees them all.
+check_warnings() {
+  local log=$1 ours in_headers
+  ours=$(grep -E "^$root/(src|test|doc)/[^:]+:[0-9]+:([0-9]+:)? warning: " "$log" | sort -u || true)
+  in_headers=$({ grep -E "^$root/include/[^:]+:[0-9]+:([0-9]+:)? warning: " "$log" || true; } | sort -u | wc -l)
+  if ((in_headers)); then
+    say "$in_headers distinct compiler warnings in include/ (fatal once WARNINGS_AS_ERRORS_IN_TEST=ON)"
+  fi
+  if [[ -n $ours ]]; then
+    printf '%s\n' "$ours" >&2
+    die "compiler warnings in src/, test/ or doc/ (above; the whole log: $log)"
+  fi
+}
+
+# The sanitizer job (test mode): build-asan/ with AddressSanitizer and
+# UndefinedBehaviorSanitizer, -O1 -g1 (line tables for the stacks), CGAL's
+# assertions on; only SANITIZER_TARGETS are built and only the tests labelled
+# SANITIZER_LABELS run. Any report stops the program (halt_on_error, no
+# recovery) and fails its test.
+sanitizer_job() {
+  local flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"
+  say "configuring $build_asan (ASan + UBSan: $flags)"
+  cmake -S "$root" -B "$build_asan" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSUBDIV_WARNINGS_AS_ERRORS=OFF \
+    -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null ||
+    die "cmake configuration of $build_asan failed (run: cmake -S . -B build-asan to see why)"
+  say "building ${SANITIZER_TARGETS[*]} with sanitizers, $jobs jobs"
+  cmake --build "$build_asan" -j "$jobs" --target "${SANITIZER_TARGETS[@]}" >"$build_asan/build.log" 2>&1 || {
+    tail -n 60 "$build_asan/build.log" >&2
+    die "the sanitizer build failed (the whole log: $build_asan/build.log)"
+  }
+  local labels
+  labels="^($(IFS='|'; echo "${SANITIZER_LABELS[*]}"))\$"
+  say "running the tests labelled ${SANITIZER_LABELS[*]} under the sanitizers (ctest -j $jobs)"
+  (
+    cd "$build_asan"
+    export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1:strict_string_checks=1}
+    export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+    ctest --output-on-failure -j "$jobs" --timeout 1500 -L "$labels"
+  ) || die "the tests under ASan + UBSan failed (above; build-asan/); the main tests were not run"
 }
 
 install_missing
@@ -118,7 +187,13 @@ fi
 
 # test
 say "building everything with $jobs jobs"
-cmake --build "$build" -j "$jobs" || die "the build failed (see above)"
+cmake --build "$build" -j "$jobs" 2>&1 | tee "$build/build.log" || die "the build failed (see above)"
+[[ $WARNINGS_AS_ERRORS_IN_TEST == ON ]] || check_warnings "$build/build.log"
+if ((sanitizers)); then
+  sanitizer_job
+else
+  say "sanitizer job skipped (--no-sanitizers)"
+fi
 say "running the tests (ctest -j $jobs)"
 # ctest's summary stays the last thing printed, and its exit code is ours
 cd "$build"
