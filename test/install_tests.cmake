@@ -2,7 +2,9 @@
 #
 # 1. Every program doc/examples/*.cpp is built and run as a test (CGAL's
 #    create_single_source_cgal_program habit): target example_<name>, test
-#    example.<name>; an example passes when it exits with 0.
+#    example.<name>; an example passes when it exits with 0. Examples that
+#    read a bundled input find doc/data through SUBDIV_EXAMPLE_DATA_DIR (ctest
+#    runs them in the build tree), or take a file as their first argument.
 # 2. install.consumer installs this build tree into a temporary prefix and
 #    builds and runs the outside project doc/examples/consumer against that
 #    prefix only (find_package(CGALSubdiv) + CGAL::Subdiv).
@@ -14,6 +16,7 @@ foreach(source ${SUBDIV_EXAMPLE_SOURCES})
   get_filename_component(name ${source} NAME_WE)
   add_executable(example_${name} ${source})
   target_link_libraries(example_${name} PRIVATE CGAL::Subdiv subdiv_warnings)
+  target_compile_definitions(example_${name} PRIVATE SUBDIV_EXAMPLE_DATA_DIR="${PROJECT_SOURCE_DIR}/doc/data")
   add_test(NAME example.${name} COMMAND example_${name})
   set_tests_properties(example.${name} PROPERTIES LABELS example TIMEOUT 120)
 endforeach()

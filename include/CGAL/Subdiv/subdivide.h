@@ -28,6 +28,9 @@ namespace Subdiv {
  * \tparam Mask a model of `SurfaceSubdivisionMask` (`Loop_mask`, ...) over
  *         `PolygonMesh`, whose `Number_type` is the number type of the points
  *         of the vertex point map used
+ * \param mesh the mesh to refine, in place
+ * \param mask the rules of the scheme, with their options (a tension, a
+ *        `Border_corners` value, ...)
  * \param np named parameters (`CGAL::Subdiv::parameters`, or CGAL's own):
  *   - `number_of_iterations` (default 1): how many levels;
  *   - `vertex_point_map` (default the mesh's internal point map): where the

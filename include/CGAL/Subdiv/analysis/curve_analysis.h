@@ -458,6 +458,7 @@ inline double level_distance(const std::vector<Double_point>& old_points, const 
  * through the three points). Open polylines get 0 at their two end points;
  * coincident neighbours give 0. Computed in double.
  * \tparam PointRange a range of `Point_2` or `Point_3` of any kernel
+ * \param points the polyline
  * \param np optional named parameters: `closed` (default false).
  * \throws Bad_input for a closed polyline of fewer than 3 points
  */
@@ -513,6 +514,8 @@ std::vector<double> discrete_curvature(const PointRange& points,
  *
  * \tparam PointRange a range of `Point_2` or `Point_3` of any kernel whose
  *         `FT` is the scheme's `Number_type`
+ * \param points the control polygon of level 0, left unchanged
+ * \param scheme the rules of the scheme, with their options
  * \param np optional named parameters: `number_of_iterations`, `closed`,
  *   `end_rule` and `max_output_points`, with the defaults of `refine_polyline()`.
  * \throws Bad_input as `refine_polyline()` does.

@@ -630,6 +630,8 @@ Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const
  *         gives the exact matrix where the weights are rational
  * \param mask the scheme (any mesh and number type: it is rebound to
  *         `Analysis_mesh` and FT with its options)
+ * \param where the configuration: `where.valence` is the `valence` above,
+ *        `where.on_border()` is `border`
  * \param np named parameters: `rings`
  * \throws Bad_input for a valence the scheme or the patch cannot have, or if
  *         no neighbourhood of up to 8 rings is invariant

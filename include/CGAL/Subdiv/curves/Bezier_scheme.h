@@ -275,6 +275,8 @@ std::vector<Point> bezier_adaptive(const std::vector<Point>& points, int degree,
  *
  * \tparam PointRange a range of `Point_2` or `Point_3` of any CGAL kernel
  *         (`std::vector`, `std::list`, a boost range, ...)
+ * \param points the control points of the chain, left unchanged
+ * \param degree the degree d of every segment
  * \param np optional named parameters, from `CGAL::Subdiv::parameters` (or
  *   CGAL's own `CGAL::parameters::number_of_iterations()`), in any order:
  *   - `number_of_iterations` (default 1): how many uniform levels;
@@ -315,6 +317,10 @@ std::vector<internal::Range_point<PointRange>> bezier_subdivision(
  * as `bezier_subdivision(points, degree, np.flatness_tolerance(tolerance))`,
  * for a tolerance that the call always has.
  *
+ * \param points the control points of the chain, left unchanged
+ * \param degree the degree d of every segment
+ * \param tolerance the flatness tolerance (see `flatness_tolerance` of
+ *        `bezier_subdivision()`)
  * \param np optional named parameters: `closed` and `max_output_points`, as
  *   for `bezier_subdivision()`.
  * \throws Bad_input for a non-positive tolerance, a point count that is not a

@@ -99,6 +99,8 @@ private:
  * that the masks are what the algorithm does.
  *
  * \tparam PointRange a range of `Point_2` or `Point_3` of any CGAL kernel
+ * \param points the control polygon, left unchanged
+ * \param degree the degree k of the B-spline (k averagings per level)
  * \param np optional named parameters, in any order: `number_of_iterations`
  *   (default 1), `closed` (default false) and `max_output_points` (default
  *   `default_max_output_points`), as for `refine_polyline()`.

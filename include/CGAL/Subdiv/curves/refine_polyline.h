@@ -190,6 +190,8 @@ std::vector<Point> refine_polyline_once(const std::vector<Point>& points, const 
  *         whose `FT` is the scheme's `Number_type` (`std::vector`, `std::list`,
  *         a boost range, ...); with an exact kernel the result is exact.
  * \tparam Scheme a model of `CurveSubdivisionScheme`
+ * \param points the control polygon, left unchanged
+ * \param scheme the rules of the scheme, with their options
  * \param np optional named parameters, from `CGAL::Subdiv::parameters` (or
  *   CGAL's own `CGAL::parameters::number_of_iterations()`), in any order:
  *   - `number_of_iterations` (default 1): how many levels;

@@ -365,6 +365,9 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
  *
  * \tparam PolygonMesh a model of `FaceGraph`
  * \tparam Mask a model of `SurfaceSubdivisionMask`
+ * \param mesh the coarse mesh, left unchanged: its vertices are the sources
+ *        of the table (the levels are refined on a copy)
+ * \param mask the rules of the scheme, with their options
  * \param np named parameters (`CGAL::Subdiv::parameters`):
  *   - `number_of_iterations` (default 1): how many levels;
  *   - `vertex_point_map` (default the mesh's): the points of the refined mesh;
