@@ -314,7 +314,7 @@ TEST(Parallel, composed_tables_give_the_refined_points)
       S::catmull_clark_subdivision(refined, CGAL::parameters::number_of_iterations(3));
     }
     std::vector<Point> coarse(input.points().begin(), input.points().end()), fine;
-    table.apply(coarse, fine, 2);
+    table.apply(coarse, fine, S::parameters::threads(2));
     ASSERT_EQ(fine.size(), refined.number_of_vertices());
     double worst = 0;
     for(const V v : refined.vertices())
@@ -339,8 +339,8 @@ TEST(Parallel, flat_apply_equals_the_generic_apply)
     array_in.push_back({p.x(), p.y(), p.z()});
   }
   for(const int threads : {1, 2}) {
-    table.apply(flat_in.data(), flat_out.data(), 3, threads);
-    table.apply(array_in, array_out, threads);
+    table.apply(flat_in.data(), flat_out.data(), 3, S::parameters::threads(threads));
+    table.apply(array_in, array_out, S::parameters::threads(threads));
     for(std::size_t i = 0; i < fine.size(); ++i) {
       ASSERT_EQ(flat_out[3 * i], fine[i].x());
       ASSERT_EQ(flat_out[3 * i + 1], fine[i].y());
@@ -354,7 +354,7 @@ TEST(Parallel, flat_apply_equals_the_generic_apply)
     std::vector<double> in(dimension * coarse.size()), out(dimension * table.number_of_stencils());
     for(std::size_t k = 0; k < in.size(); ++k)
       in[k] = std::sin(0.37 * static_cast<double>(k));
-    table.apply(in.data(), out.data(), dimension, 2);
+    table.apply(in.data(), out.data(), dimension, S::parameters::threads(2));
     for(std::size_t d = 0; d < dimension; ++d) {
       std::vector<double> channel, channel_out;
       for(std::size_t s = 0; s < coarse.size(); ++s)
@@ -366,6 +366,6 @@ TEST(Parallel, flat_apply_equals_the_generic_apply)
   }
   // the parallel generic apply gives the same points
   std::vector<Point> fine_parallel;
-  table.apply(coarse, fine_parallel, 2);
+  table.apply(coarse, fine_parallel, S::parameters::threads(2));
   EXPECT_EQ(fine_parallel, fine);
 }

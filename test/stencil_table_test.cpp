@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,45 @@ TEST(Stencil_table, refuses_what_subdivide_refuses_and_mismatched_inputs)
     S::make_stencil_table(open_bipyramid_piece(), S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
   std::vector<KE::Point_3> too_few(3), out;
   EXPECT_NE(testing_utils::bad_input_message([&] { table.apply(too_few, out); }).find("needs 6 source values"),
+            std::string::npos);
+}
+
+TEST(Stencil_table, applies_to_any_range_and_through_property_maps)
+{
+  const Mesh coarse = open_bipyramid_piece();
+  Mesh refined;
+  const auto table =
+    S::make_stencil_table(coarse, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(2).refined_mesh(refined));
+  const auto expected = points_of(refined);
+  // a list in (no random access), a fixed-size array out (not resized)
+  const auto control = points_of(coarse);
+  const std::list<KE::Point_3> listed(control.begin(), control.end());
+  std::vector<KE::Point_3> room(table.number_of_stencils());
+  table.apply(listed, room);
+  EXPECT_EQ(room, expected);
+  std::array<KE::Point_3, 2> too_small;
+  EXPECT_NE(testing_utils::bad_input_message([&] { table.apply(control, too_small); }).find("needs room for"),
+            std::string::npos);
+  // vertex property maps: coarse mesh in, another mesh with the refined connectivity out
+  Mesh target = refined;
+  for(auto v : vertices(target))
+    target.point(v) = KE::Point_3(7, 7, 7);
+  table.apply(vertices(coarse), get(CGAL::vertex_point, coarse), vertices(target), get(CGAL::vertex_point, target));
+  EXPECT_EQ(points_of(target), expected);
+  // a scalar property map in, one out
+  Mesh with_heights = coarse;
+  auto height = with_heights.add_property_map<Mesh::Vertex_index, FT>("v:height", FT(0)).first;
+  for(auto v : vertices(with_heights))
+    height[v] = with_heights.point(v).x() - 2 * with_heights.point(v).y();
+  Mesh scalar_target = refined;
+  auto fine_height = scalar_target.add_property_map<Mesh::Vertex_index, FT>("v:height", FT(0)).first;
+  table.apply(vertices(with_heights), height, vertices(scalar_target), fine_height);
+  for(auto v : vertices(scalar_target))
+    EXPECT_EQ(fine_height[v], refined.point(v).x() - 2 * refined.point(v).y());
+  // the key ranges must match the table
+  EXPECT_NE(testing_utils::bad_input_message([&] {
+              table.apply(vertices(coarse), height, vertices(coarse), fine_height);
+            }).find("output keys"),
             std::string::npos);
 }
 

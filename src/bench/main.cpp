@@ -247,7 +247,7 @@ void refinement_section(const Options& options)
     std::to_string(options.runs) +
     " runs after a warm-up, one thread unless said. Ours and CGAL: `loop_subdivision` / "
     "`catmull_clark_subdivision` / ... and `Subdivision_method_3` on a copy of the input `Surface_mesh`, "
-    "refined in place; `ours 2T`: ours with `CGAL::Subdiv::threads(2)`. OpenMesh: "
+    "refined in place; `ours 2T`: ours with `CGAL::Subdiv::parameters::threads(2)`. OpenMesh: "
     "`Subdivider::Uniform::LoopT` / `CatmullClarkT` on its own mesh (double points). OSD Far: "
     "`TopologyRefinerFactory<TopologyDescriptor>::Create` + `RefineUniform` + "
     "`PrimvarRefinerReal<double>::Interpolate` level by level into arrays: topology and positions, but no "
@@ -396,7 +396,8 @@ void stencil_build_section(const Options& options)
     "\n## Stencil table build\n\n"
     "Seconds, minimum of " +
     std::to_string(options.runs) +
-    " runs. Ours: `make_stencil_table(mesh, mask, levels)` (the refined topology and one composed table from "
+    " runs. Ours: `make_stencil_table(mesh, mask, parameters::number_of_iterations(levels))` (the refined topology and "
+    "one composed table from "
     "the coarse points to the finest ones, input check included). OSD: `StencilTableFactoryReal<double>::Create` "
     "on a uniformly refined `TopologyRefiner` (generateIntermediateLevels = false, "
     "factorizeIntermediateLevels = true, generateOffsets = true), timed with the refiner's creation and "

@@ -9,11 +9,15 @@
 #include <CGAL/Subdiv/internal/Raw_array.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/internal/points.h>
+#include <CGAL/Subdiv/internal/ranges.h>
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/stencils/Row_builder.h>
+#include <boost/property_map/property_map.hpp>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -152,24 +156,63 @@ public:
   }
 
   /*!
-   * evaluates every stencil on `in` (one value per source) into `out` (one
-   * value per stencil). Points (`Point_2`, `Point_3`) are combined affinely;
-   * other values need `value * weight` and `value + value`, with the weight
-   * converted to `double` unless the value type is `FT`.
-   * `threads`: 1 (the default) in this thread, 0 TBB's choice, n at most n
-   * threads (with TBB; see `CGAL::Subdiv::threads()`); the values are the
-   * same bit for bit.
+   * evaluates every stencil on `in` (one value per source, any range) into
+   * `out` (one value per stencil: a container that is resized, or a
+   * random-access range of that size). Points (`Point_2`, `Point_3`) are
+   * combined affinely; other values need `value * weight` and
+   * `value + value`, with the weight converted to `double` unless the value
+   * type is `FT`.
+   *
+   * Named parameters: `threads(n)`: 1 (the default) in this thread, 0 TBB's
+   * choice, n at most n threads (with TBB); the values are the same bit for
+   * bit. Tables of exact weights are applied in one thread.
    */
-  template <class Value>
-  void apply(const std::vector<Value>& in, std::vector<Value>& out, int threads = 1) const
+  template <class InputRange, class OutputRange, class NamedParameters = parameters::Default_named_parameters,
+            class = std::enable_if_t<internal::Is_range<InputRange>::value>>
+  void apply(const InputRange& in, OutputRange&& out, const NamedParameters& np = parameters::default_values()) const
   {
-    check_sources(in.size());
-    out.resize(number_of_stencils());
-    internal::Parallel_loop loop(threads);
-    if constexpr(!std::is_floating_point<FT>::value)
-      loop = internal::Parallel_loop(1); // exact numbers: one thread
-    loop.for_range(number_of_stencils(), 4096,
-                   [&](std::size_t first, std::size_t last) { apply_range(in, out, first, last); });
+    if constexpr(internal::Is_random_access_range<InputRange>::value) {
+      check_sources(static_cast<std::size_t>(std::distance(std::begin(in), std::end(in))));
+      internal::resize_output(out, number_of_stencils(), "the stencil table's output");
+      const auto source = std::begin(in);
+      auto target = std::begin(out);
+      loop_for(np).for_range(number_of_stencils(), 4096, [&](std::size_t first, std::size_t last) {
+        for(std::size_t i = first; i < last; ++i)
+          target[i] = evaluate(source, i);
+      });
+    } else {
+      using Value = typename std::iterator_traits<decltype(std::begin(in))>::value_type;
+      apply(std::vector<Value>(std::begin(in), std::end(in)), out, np);
+    }
+  }
+
+  /*!
+   * the same through property maps: the sources are `get(input_map, k)` for
+   * the keys `k` of `input_keys` in order, and `put(output_map, k, value)`
+   * stores stencil i's value for the i-th key of `output_keys`. A table of
+   * `make_stencil_table(coarse, mask, parameters::refined_mesh(fine))` takes
+   * `vertices(coarse)` and gives `vertices(fine)`, each in iteration order.
+   */
+  template <class InputKeys, class InputMap, class OutputKeys, class OutputMap,
+            class NamedParameters = parameters::Default_named_parameters,
+            class = std::enable_if_t<internal::Is_range<InputKeys>::value && internal::Is_range<OutputKeys>::value>>
+  void apply(const InputKeys& input_keys, const InputMap& input_map, const OutputKeys& output_keys,
+             const OutputMap& output_map, const NamedParameters& np = parameters::default_values()) const
+  {
+    using Value = typename boost::property_traits<InputMap>::value_type;
+    std::vector<Value> in;
+    in.reserve(m_sources);
+    for(const auto& k : input_keys)
+      in.push_back(get(input_map, k));
+    const std::size_t outputs = static_cast<std::size_t>(std::distance(std::begin(output_keys), std::end(output_keys)));
+    internal::require(outputs == number_of_stencils(), "the stencil table has " + std::to_string(number_of_stencils()) +
+                                                         " stencils, but " + std::to_string(outputs) +
+                                                         " output keys were given");
+    std::vector<Value> out;
+    apply(in, out, np);
+    std::size_t i = 0;
+    for(const auto& k : output_keys)
+      put(output_map, k, out[i++]);
   }
 
   /*!
@@ -177,39 +220,49 @@ public:
    * vector-valued vertex data), for a table of double weights: `in` holds
    * `dimension` doubles per source, `out` receives `dimension` doubles per
    * stencil; the result is the same bit for bit as `apply` on points with
-   * double coordinates.
+   * double coordinates. Named parameters: `threads(n)`.
    */
-  void apply(const double* in, double* out, std::size_t dimension, int threads = 1) const
+  template <class NamedParameters = parameters::Default_named_parameters>
+  void apply(const double* in, double* out, std::size_t dimension,
+             const NamedParameters& np = parameters::default_values()) const
   {
     apply_flat(
       dimension, [in, dimension](Index s) { return in + std::size_t(s) * dimension; },
-      [out, dimension](std::size_t i) { return out + i * dimension; }, threads);
+      [out, dimension](std::size_t i) { return out + i * dimension; }, loop_for(np));
   }
 
   /// the same on `std::array<double, N>` values
-  template <std::size_t N>
+  template <std::size_t N, class NamedParameters = parameters::Default_named_parameters>
   void apply(const std::vector<std::array<double, N>>& in, std::vector<std::array<double, N>>& out,
-             int threads = 1) const
+             const NamedParameters& np = parameters::default_values()) const
   {
     check_sources(in.size());
     out.resize(number_of_stencils());
     const std::array<double, N>* source = in.data();
     std::array<double, N>* target = out.data();
     apply_flat(
-      N, [source](Index s) { return source[s].data(); }, [target](std::size_t i) { return target[i].data(); }, threads);
+      N, [source](Index s) { return source[s].data(); }, [target](std::size_t i) { return target[i].data(); },
+      loop_for(np));
   }
 
-  /// evaluates stencils [first, last) only (e.g. one chunk per thread)
-  template <class Value>
-  void apply_range(const std::vector<Value>& in, std::vector<Value>& out, std::size_t first, std::size_t last) const
+  /// evaluates stencils [first, last) only (e.g. one chunk per thread of
+  /// one's own); `in` and `out` are random-access ranges of full size
+  template <class InputRange, class OutputRange>
+  void apply_range(const InputRange& in, OutputRange& out, std::size_t first, std::size_t last) const
   {
+    const auto source = std::begin(in);
+    auto target = std::begin(out);
     for(std::size_t i = first; i < last; ++i)
-      out[i] = evaluate(in, i);
+      target[i] = evaluate(source, i);
   }
 
-  template <class Value>
-  Value evaluate(const std::vector<Value>& in, std::size_t i) const
+  /// the value of stencil i on the sources `in[0], in[1], ...` (a random-access
+  /// iterator or range)
+  template <class Sources>
+  auto evaluate(const Sources& sources, std::size_t i) const
   {
+    const auto in = internal::begin_of(sources);
+    using Value = std::decay_t<decltype(in[0])>;
     const std::size_t begin = stencil_begin(i), end = stencil_end(i);
     if constexpr(internal::Is_point<Value>::value && internal::Is_double_point_3<Value>::value &&
                  std::is_same<FT, double>::value) {
@@ -306,11 +359,21 @@ private:
     }
   }
 
+  // exact numbers: one thread
+  template <class NamedParameters>
+  internal::Parallel_loop loop_for(const NamedParameters& np) const
+  {
+    if constexpr(std::is_floating_point<FT>::value)
+      return internal::parallel_loop(np);
+    else
+      return internal::Parallel_loop(1);
+  }
+
   template <class In, class Out>
-  void apply_flat(std::size_t dimension, const In& in, const Out& out, int threads) const
+  void apply_flat(std::size_t dimension, const In& in, const Out& out, const internal::Parallel_loop& loop) const
   {
     static_assert(std::is_same<FT, double>::value, "the flat apply needs a table of double weights");
-    internal::Parallel_loop(threads).for_range(number_of_stencils(), 4096, [&](std::size_t first, std::size_t last) {
+    loop.for_range(number_of_stencils(), 4096, [&](std::size_t first, std::size_t last) {
       switch(dimension) {
         case 1:
           apply_rows<1>(first, last, 1, in, out);

@@ -329,14 +329,7 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
   }
 
   if(refined_mesh != nullptr) {
-    using Point = typename boost::property_traits<decltype(work_vpm)>::value_type;
-    std::vector<Point> coarse, fine;
-    for(auto v : vertices(mesh))
-      coarse.push_back(get(vpm, v));
-    table.apply(coarse, fine, loop.threads());
-    std::size_t i = 0;
-    for(auto v : vertices(work))
-      put(work_vpm, v, fine[i++]);
+    table.apply(vertices(mesh), vpm, vertices(work), work_vpm, parameters::threads(loop.threads()));
     *refined_mesh = std::move(work);
   }
   return table;
