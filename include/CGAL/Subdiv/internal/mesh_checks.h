@@ -5,12 +5,12 @@
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/internal/memory.h>
 #include <CGAL/Subdiv/internal/points.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
-#include <unistd.h>
 #include <cstddef>
 #include <string>
 
@@ -157,15 +157,6 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     ++i;
   }
   require(CGAL::is_valid_polygon_mesh(mesh), scheme + ": the mesh is not a valid polygon mesh");
-}
-
-inline double physical_memory_bytes()
-{
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page_size = sysconf(_SC_PAGE_SIZE);
-  if(pages <= 0 || page_size <= 0)
-    return 16.0 * (1u << 30);
-  return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
 // A mesh costs about this many bytes per face (vertices, halfedges, edges,
