@@ -22,9 +22,12 @@ enum class Analysis_status {
 inline std::string to_string(Analysis_status status)
 {
   switch(status) {
-    case Analysis_status::success: return "success";
-    case Analysis_status::no_convergence: return "no convergence";
-    case Analysis_status::not_affine_invariant: return "not affine invariant";
+    case Analysis_status::success:
+      return "success";
+    case Analysis_status::no_convergence:
+      return "no convergence";
+    case Analysis_status::not_affine_invariant:
+      return "not affine invariant";
   }
   return "unknown";
 }

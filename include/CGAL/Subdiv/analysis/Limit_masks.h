@@ -13,6 +13,7 @@
 #include <CGAL/Subdiv/analysis/surface_neighbourhood.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/parameters.h>
+#include <CGAL/assertions.h>
 
 #include <CGAL/Exact_rational.h>
 
@@ -102,7 +103,8 @@ Limit_masks compute_limit_masks(const Mask& mask, const Configuration& where)
   require(analysis.one_is_simple_and_dominant, at + ": 1 is not a simple dominant eigenvalue, there is no limit mask");
   const Local_subdivision_matrix<CGAL::Exact_rational> exact =
     local_subdivision_matrix<CGAL::Exact_rational>(mask, where, parameters::rings(analysis.rings));
-  require(exact.invariant && exact.S.rows() == analysis.matrix.rows(), at + ": the exact local matrix does not match");
+  CGAL_assertion_msg(exact.invariant && exact.S.rows() == analysis.matrix.rows(),
+                     "the exact local matrix does not match the analysed one");
   masks.limit = normalised_left_fixed_vector(exact.S);
   require(!masks.limit.empty(), at + ": the limit mask is not unique");
   if constexpr(Traits::face_centred) {

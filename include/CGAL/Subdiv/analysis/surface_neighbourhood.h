@@ -20,6 +20,7 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -242,7 +243,7 @@ inline bool border_face_start(const Analysis_mesh& mesh, Analysis_face f, Analys
       start = h;
       ++runs;
     }
-  require(runs <= 1, "a central face whose border edges are not consecutive");
+  CGAL_assertion_msg(runs <= 1, "a central face whose border edges are not consecutive");
   return runs == 1;
 }
 
@@ -434,11 +435,13 @@ inline Patch crop_patch(const Analysis_mesh& mesh, Analysis_halfedge start, bool
                    [&](const std::vector<Analysis_vertex>& a, const std::vector<Analysis_vertex>& b) {
                      return smallest(a) < smallest(b);
                    });
-  for(const auto& f : faces)
-    require(CGAL::Euler::add_face(f, result.mesh) != Analysis_mesh::null_face(),
-            "the cropped neighbourhood is not a manifold patch");
+  for(const auto& f : faces) {
+    const auto added = CGAL::Euler::add_face(f, result.mesh);
+    CGAL_assertion_msg(added != Analysis_mesh::null_face(), "the cropped neighbourhood is not a manifold patch");
+    CGAL_USE(added);
+  }
   const auto h = CGAL::halfedge(Analysis_vertex(0), Analysis_vertex(1), result.mesh);
-  require(labels.size() >= 2 && h.second, "the cropped neighbourhood lost its start");
+  CGAL_assertion_msg(labels.size() >= 2 && h.second, "the cropped neighbourhood lost its start");
   result.start = h.first;
   return result;
 }
