@@ -13,10 +13,6 @@
 set -euo pipefail
 
 readonly CLANG_FORMAT_MAJOR=14
-# Paths (prefixes) whose files are checked and listed but do not fail the
-# check yet: include/ is being refactored beside this check (issue 9) and has
-# files formatted after 8e3ac0f. Empty the array to enforce everything.
-readonly NOT_YET_ENFORCED=(include/)
 
 skip() {
   printf 'format check skipped: %s\n' "$*"
@@ -62,31 +58,11 @@ if ((status != 0 && ${#violating[@]} == 0)); then
   printf '%s failed (exit %d):\n%s\n' "$clang_format" "$status" "$report"
   exit 1
 fi
-unformatted=()
-pending=()
-for file in "${violating[@]}"; do
-  enforced=1
-  for prefix in "${NOT_YET_ENFORCED[@]}"; do
-    [[ $file == "$prefix"* ]] && enforced=0
-  done
-  if ((enforced)); then
-    unformatted+=("$file")
-  else
-    pending+=("$file")
-  fi
-done
-
-if ((${#pending[@]})); then
-  printf 'not formatted, not enforced yet (%s): %s\n' "${NOT_YET_ENFORCED[*]}" "${pending[*]}"
-fi
+unformatted=("${violating[@]}")
 if ((${#unformatted[@]})); then
   printf 'not formatted as .clang-format says (%s):\n' "$version"
   printf '  %s\n' "${unformatted[@]}"
   printf 'fix with: %s -i %s\n' "$clang_format" "${unformatted[*]}"
   exit 1
 fi
-if ((${#pending[@]})); then
-  printf '%d tracked *.h and *.cpp files checked with %s: the enforced ones are formatted\n' "${#existing[@]}" "$clang_format"
-else
-  printf '%d tracked *.h and *.cpp files checked with %s: formatted\n' "${#existing[@]}" "$clang_format"
-fi
+printf '%d tracked *.h and *.cpp files checked with %s: formatted\n' "${#existing[@]}" "$clang_format"

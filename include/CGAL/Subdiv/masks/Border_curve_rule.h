@@ -61,8 +61,7 @@ public:
   /// the new vertex on the border edge of `g` (a primal scheme's odd rule,
   /// offset 0 at source(g), 1 at target(g)); `g` is either halfedge of the edge
   template <class Mesh, class Accumulator>
-  void edge_point(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor g,
-                  Accumulator& acc) const
+  void edge_point(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor g, Accumulator& acc) const
   {
     add_along(m_odd, mesh, g, acc);
   }
@@ -70,8 +69,7 @@ public:
   /// the new vertex of a dual scheme on the border edge of `g` next to
   /// source(g) (the even rule, offset 0 at source(g), 1 at target(g))
   template <class Mesh, class Accumulator>
-  void dual_point(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor g,
-                  Accumulator& acc) const
+  void dual_point(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor g, Accumulator& acc) const
   {
     add_along(m_even, mesh, g, acc);
   }

@@ -67,8 +67,7 @@ public:
   /// (edge midpoints); w = 1/16 is the value of the paper.
   explicit Butterfly_mask(const FT& w = FT(1) / FT(16))
     : m_w(checked(w)), m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w), m_border(Four_point_scheme<FT>(w))
-  {
-  }
+  {}
 
   /// the same rules, with the same tension, for another mesh type and number type
   template <class OtherMesh, class OtherFT>

@@ -65,8 +65,7 @@ public:
 
   explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth)
     : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
-  {
-  }
+  {}
 
   /// the same rules, with the same options, for another mesh type and number type
   template <class OtherMesh, class OtherFT>
@@ -105,9 +104,14 @@ public:
   void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
     switch(view.rule()) {
-      case Vertex_rule::corner: acc.add(view.vertex(), FT(1)); return;
-      case Vertex_rule::crease: m_border.vertex_point(view, acc); return;
-      case Vertex_rule::smooth: break;
+      case Vertex_rule::corner:
+        acc.add(view.vertex(), FT(1));
+        return;
+      case Vertex_rule::crease:
+        m_border.vertex_point(view, acc);
+        return;
+      case Vertex_rule::smooth:
+        break;
     }
     const Mesh& mesh = view.mesh();
     const vertex_descriptor v = view.vertex();

@@ -26,11 +26,21 @@ FT cos_two_pi_over(int n, bool* exact = nullptr)
   bool rational = true;
   FT value;
   switch(n) {
-    case 1: value = FT(1); break;
-    case 2: value = FT(-1); break;
-    case 3: value = FT(-1) / FT(2); break;
-    case 4: value = FT(0); break;
-    case 6: value = FT(1) / FT(2); break;
+    case 1:
+      value = FT(1);
+      break;
+    case 2:
+      value = FT(-1);
+      break;
+    case 3:
+      value = FT(-1) / FT(2);
+      break;
+    case 4:
+      value = FT(0);
+      break;
+    case 6:
+      value = FT(1) / FT(2);
+      break;
     default:
       rational = false;
       value = FT(std::cos(2 * CGAL_PI / n));

@@ -123,8 +123,7 @@ public:
 
   Edge_view(const Mesh& mesh, halfedge_descriptor h, Border_corners corners = Border_corners::smooth)
     : m_mesh(&mesh), m_halfedge(h), m_corners(corners), m_border(CGAL::is_border_edge(h, mesh))
-  {
-  }
+  {}
 
   const Mesh& mesh() const { return *m_mesh; }
   halfedge_descriptor halfedge() const { return m_halfedge; }
@@ -161,8 +160,7 @@ public:
 
   Face_view(const Mesh& mesh, face_descriptor f, Border_corners corners = Border_corners::smooth)
     : m_mesh(&mesh), m_face(f), m_corners(corners)
-  {
-  }
+  {}
 
   const Mesh& mesh() const { return *m_mesh; }
   face_descriptor face() const { return m_face; }
@@ -193,12 +191,9 @@ public:
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
 
   Corner_view(const Mesh& mesh, halfedge_descriptor h)
-    : m_mesh(&mesh),
-      m_halfedge(h),
-      m_border_before(CGAL::is_border(opposite(h, mesh), mesh)),
+    : m_mesh(&mesh), m_halfedge(h), m_border_before(CGAL::is_border(opposite(h, mesh), mesh)),
       m_border_after(CGAL::is_border(opposite(next(h, mesh), mesh), mesh))
-  {
-  }
+  {}
 
   const Mesh& mesh() const { return *m_mesh; }
   /// the halfedge of the face that ends at the corner
@@ -230,13 +225,10 @@ namespace internal {
 
 template <class Mask, class = void>
 struct Has_border_corners : std::false_type
-{
-};
+{};
 template <class Mask>
-struct Has_border_corners<Mask, std::void_t<decltype(std::declval<const Mask&>().border_corners())>>
-  : std::true_type
-{
-};
+struct Has_border_corners<Mask, std::void_t<decltype(std::declval<const Mask&>().border_corners())>> : std::true_type
+{};
 
 /// the `Border_corners` option of a mask (smooth for masks without one)
 template <class Mask>
