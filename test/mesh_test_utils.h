@@ -20,6 +20,14 @@ namespace testing_utils {
 
 using Double_point = CGAL::Simple_cartesian<double>::Point_3;
 
+/// path of a file bundled with the tests, in test/data (test/data/LICENSE-NOTICES.md
+/// says where each comes from): `test_mesh("cgal/tetrahedron.off")` is the same file
+/// as `shared_mesh("cgal/tetrahedron.off")`, present in every clone
+inline std::string test_mesh(const std::string& name)
+{
+  return std::string(SUBDIV_TEST_DATA_DIR) + "/" + name;
+}
+
 /// path of a file in ../shared/data/meshes
 inline std::string shared_mesh(const std::string& name)
 {
@@ -114,6 +122,24 @@ bool read_obj_positions(const std::string& path, Mesh& mesh)
     return false;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
   return true;
+}
+
+/// reads an OFF/PLY/... file with CGAL's reader, an OBJ file with
+/// read_obj_positions(); false on failure
+template <class Mesh>
+bool read_mesh(const std::string& path, Mesh& mesh)
+{
+  const bool obj = path.size() > 4 && path.substr(path.size() - 4) == ".obj";
+  return obj ? read_obj_positions(path, mesh) : CGAL::IO::read_polygon_mesh(path, mesh);
+}
+
+/// the bundled mesh `name` (test_mesh()); a failed read is a test failure
+template <class Mesh>
+Mesh bundled(const std::string& name)
+{
+  Mesh mesh;
+  EXPECT_TRUE(read_mesh(test_mesh(name), mesh)) << test_mesh(name);
+  return mesh;
 }
 
 /// the message of the Bad_input that `call` throws, or "no exception"
