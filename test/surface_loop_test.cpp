@@ -64,21 +64,16 @@ TEST(Loop, exact_kernel_weights_and_counts)
   using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
   using P = KE::Point_3;
   using FT = KE::FT;
-  CGAL::Surface_mesh<P> octahedron; // every vertex has valence 4: Loop's beta 31/256 is rational there
-  const P top(0, 0, 1), bottom(0, 0, -1), e[4] = {P(1, 0, 0), P(0, 1, 0), P(-1, 0, 0), P(0, -1, 0)};
-  auto t = octahedron.add_vertex(top), b = octahedron.add_vertex(bottom);
-  decltype(t) ring[4];
-  for(int i = 0; i < 4; ++i)
-    ring[i] = octahedron.add_vertex(e[i]);
-  for(int i = 0; i < 4; ++i) {
-    octahedron.add_face(t, ring[i], ring[(i + 1) % 4]);
-    octahedron.add_face(b, ring[(i + 1) % 4], ring[i]);
-  }
+  // the octahedron, a bipyramid over a square: every vertex has valence 4,
+  // where Loop's beta 31/256 is rational
+  using Octahedron = CGAL::Surface_mesh<P>;
+  const P e[4] = {P(1, 0, 0), P(0, 1, 0), P(-1, 0, 0), P(0, -1, 0)};
+  Octahedron octahedron = testing_utils::bipyramid<Octahedron>(4, P(0, 0, 1), P(0, 0, -1), [&](int i) { return e[i]; });
   S::loop_subdivision(octahedron);
   EXPECT_EQ(num_vertices(octahedron), 6u + 12u);
   EXPECT_EQ(num_faces(octahedron), 32u);
   // old vertex: (1 - 4 beta) top + beta * (sum of the ring, which is 0): z = 1 - 124/256
-  const P moved_top = octahedron.point(decltype(t)(0));
+  const P moved_top = octahedron.point(Octahedron::Vertex_index(0));
   EXPECT_EQ(moved_top, P(0, 0, FT(1) - FT(4 * 31) / FT(256)));
   // edge top-e0: 3/8 top + 3/8 e0 + 1/8 e1 + 1/8 e3 = (3/8, 0, 3/8)
   bool found = false;
