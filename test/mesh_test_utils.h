@@ -20,6 +20,14 @@ namespace testing_utils {
 
 using Double_point = CGAL::Simple_cartesian<double>::Point_3;
 
+/// path of a file bundled with the tests, in test/data (test/data/LICENSE-NOTICES.md
+/// says where each comes from): `test_mesh("cgal/tetrahedron.off")` is the same file
+/// as `shared_mesh("cgal/tetrahedron.off")`, present in every clone
+inline std::string test_mesh(const std::string& name)
+{
+  return std::string(SUBDIV_TEST_DATA_DIR) + "/" + name;
+}
+
 /// path of a file in ../shared/data/meshes
 inline std::string shared_mesh(const std::string& name)
 {
@@ -32,8 +40,20 @@ inline bool have_shared_data()
   return std::ifstream(shared_mesh("SOURCES.md")).good();
 }
 
-#define SUBDIV_REQUIRE_SHARED_DATA()     \
-  if(!testing_utils::have_shared_data()) \
+/// true when the running test has "shared" in its name, as every test that
+/// needs ../shared/data must: test/CMakeLists.txt gives those the ctest label shared-data
+inline bool test_name_says_shared()
+{
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return info && std::string(info->name()).find("shared") != std::string::npos;
+}
+
+/// skips the test without ../shared/data (a plain clone); the test's name has
+/// "shared" in it (ctest label shared-data), or it fails
+#define SUBDIV_REQUIRE_SHARED_DATA()                                                            \
+  ASSERT_TRUE(testing_utils::test_name_says_shared())                                           \
+    << "a test that needs ../shared/data has \"shared\" in its name (ctest label shared-data)"; \
+  if(!testing_utils::have_shared_data())                                                        \
   GTEST_SKIP() << "../shared/data is not beside the checkout"
 
 template <class Mesh>
@@ -114,6 +134,24 @@ bool read_obj_positions(const std::string& path, Mesh& mesh)
     return false;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
   return true;
+}
+
+/// reads an OFF/PLY/... file with CGAL's reader, an OBJ file with
+/// read_obj_positions(); false on failure
+template <class Mesh>
+bool read_mesh(const std::string& path, Mesh& mesh)
+{
+  const bool obj = path.size() > 4 && path.substr(path.size() - 4) == ".obj";
+  return obj ? read_obj_positions(path, mesh) : CGAL::IO::read_polygon_mesh(path, mesh);
+}
+
+/// the bundled mesh `name` (test_mesh()); a failed read is a test failure
+template <class Mesh>
+Mesh bundled(const std::string& name)
+{
+  Mesh mesh;
+  EXPECT_TRUE(read_mesh(test_mesh(name), mesh)) << test_mesh(name);
+  return mesh;
 }
 
 /// the message of the Bad_input that `call` throws, or "no exception"

@@ -1,6 +1,7 @@
-// Butterfly, modified butterfly and linear triangle subdivision: exact stencils,
-// regular and extraordinary weights, border rules, kernels, bad input.
-#include <CGAL/Aff_transformation_3.h>
+// Butterfly, modified butterfly and linear triangle subdivision: regular and
+// extraordinary weights, border rules, kernels, bad input. The properties
+// every scheme has (weights summing to one, counts, affine invariance,
+// planarity, Polyhedron_3) are in surface_properties.h.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Polyhedron_3.h>
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_builders.h"
 #include "mesh_test_utils.h"
 
 #include <cmath>
@@ -35,58 +37,30 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
 using testing_utils::position_mismatch;
 using testing_utils::shared_mesh;
+using testing_utils::test_mesh;
 
 namespace {
 
 // ---------------------------------------------------------------- meshes
 
-// deterministic small rationals in [-1, 1], denominators up to 16
-struct Rationals
-{
-  std::uint32_t state = 12345;
-  FT operator()()
-  {
-    state = state * 1103515245u + 12345u;
-    const int numerator = static_cast<int>((state >> 16) % 33) - 16;
-    return FT(numerator) / FT(16);
-  }
-};
-
-// two apexes of valence k over a ring of k vertices of valence 4 (closed)
+// two apexes of valence k over a ring of k vertices of valence 4 (closed),
+// generic rational points
 EMesh bipyramid(int k)
 {
-  Rationals r;
-  EMesh mesh;
-  const V top = mesh.add_vertex(P(r(), r(), FT(3)));
-  const V bottom = mesh.add_vertex(P(r(), r(), FT(-3)));
-  std::vector<V> ring;
-  for(int i = 0; i < k; ++i)
-    ring.push_back(mesh.add_vertex(P(FT(i) + r(), FT(i * i % 5) + r(), r())));
-  for(int i = 0; i < k; ++i) {
-    mesh.add_face(top, ring[i], ring[(i + 1) % k]);
-    mesh.add_face(bottom, ring[(i + 1) % k], ring[i]);
-  }
-  return mesh;
+  testing_utils::Rationals r;
+  const P top(r.next<FT>(), r.next<FT>(), FT(3));
+  const P bottom(r.next<FT>(), r.next<FT>(), FT(-3));
+  return testing_utils::bipyramid<EMesh>(
+    k, top, bottom, [&](int i) { return P(FT(i) + r.next<FT>(), FT(i * i % 5) + r.next<FT>(), r.next<FT>()); });
 }
 
 // one interior vertex of valence k (vertex 0) and a border loop of k vertices
-EMesh fan(int k, const std::function<P(int)>& ring_point, const P& centre)
-{
-  EMesh mesh;
-  const V apex = mesh.add_vertex(centre);
-  std::vector<V> ring;
-  for(int i = 0; i < k; ++i)
-    ring.push_back(mesh.add_vertex(ring_point(i)));
-  for(int i = 0; i < k; ++i)
-    mesh.add_face(apex, ring[i], ring[(i + 1) % k]);
-  return mesh;
-}
-
 EMesh fan(int k)
 {
-  Rationals r;
-  return fan(
-    k, [&](int i) { return P(FT(i) + r(), FT(i * i % 7) + r(), r()); }, P(r(), r(), r()));
+  testing_utils::Rationals r;
+  const P centre(r.next<FT>(), r.next<FT>(), r.next<FT>());
+  return testing_utils::closed_fan<EMesh>(
+    k, centre, [&](int i) { return P(FT(i) + r.next<FT>(), FT(i * i % 7) + r.next<FT>(), r.next<FT>()); });
 }
 
 // the lattice (i, j), 0 <= i <= n, 0 <= j <= m, cut by the diagonals
@@ -95,48 +69,18 @@ struct Grid
 {
   int n, m;
   EMesh mesh;
-  V at(int i, int j) const { return V(static_cast<EMesh::size_type>(j * (n + 1) + i)); }
+  V at(int i, int j) const { return testing_utils::grid_vertex<EMesh>(n, i, j); }
 };
 
 Grid grid(int n, int m, const std::function<P(int, int)>& point)
 {
-  Grid g{n, m, EMesh()};
-  for(int j = 0; j <= m; ++j)
-    for(int i = 0; i <= n; ++i)
-      g.mesh.add_vertex(point(i, j));
-  for(int j = 0; j < m; ++j)
-    for(int i = 0; i < n; ++i) {
-      g.mesh.add_face(g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1));
-      g.mesh.add_face(g.at(i, j), g.at(i + 1, j + 1), g.at(i, j + 1));
-    }
-  return g;
+  return Grid{n, m, testing_utils::grid<EMesh>(n, m, point, true, testing_utils::Diagonal::ascending)};
 }
 
 Grid random_height_grid(int n, int m)
 {
-  Rationals r;
-  return grid(n, m, [&](int i, int j) { return P(FT(i), FT(j), r()); });
-}
-
-EMesh to_exact(const Mesh& in)
-{
-  EMesh out;
-  for(auto v : vertices(in)) {
-    const K::Point_3& p = in.point(v);
-    out.add_vertex(P(p.x(), p.y(), p.z()));
-  }
-  for(auto f : faces(in)) {
-    std::vector<V> corners;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, in), in))
-      corners.push_back(V(v.idx()));
-    out.add_face(corners);
-  }
-  return out;
-}
-
-bool read_shared(const std::string& name, Mesh& mesh)
-{
-  return CGAL::IO::read_polygon_mesh(shared_mesh(name), mesh);
+  testing_utils::Rationals r;
+  return grid(n, m, [&](int i, int j) { return P(FT(i), FT(j), r.next<FT>()); });
 }
 
 // --------------------------------------------------------------- stencils
@@ -176,27 +120,6 @@ std::string describe(const Recorder& s)
   return out.str();
 }
 
-// every vertex and edge stencil sums to exactly 1, and an edge's stencil does
-// not depend on which of its halfedges the host passes
-template <class Mask>
-void expect_affine_stencils(const Mask& mask, const EMesh& mesh, const std::string& what)
-{
-  for(V v : vertices(mesh)) {
-    Recorder s;
-    mask.vertex_node(S::vertex_view(mask, mesh, v), s);
-    EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", vertex " << v.idx();
-    if(mask.is_interpolating()) {
-      EXPECT_EQ(s.weight(v), FT(1));
-    }
-  }
-  for(auto e : edges(mesh)) {
-    const Recorder s = edge_stencil(mask, mesh, halfedge(e, mesh));
-    const Recorder t = edge_stencil(mask, mesh, opposite(halfedge(e, mesh), mesh));
-    EXPECT_EQ(s.weight_sum(), FT(1)) << mask.name() << ", " << what << ", edge " << e.idx() << describe(s);
-    EXPECT_TRUE(same_stencil(s, t)) << mask.name() << ", " << what << ", edge " << e.idx();
-  }
-}
-
 // ---------------------------------------------------------------- helpers
 
 // the border loop through vertex `start`, in the direction of its border halfedge
@@ -216,101 +139,9 @@ std::vector<typename M::Point> border_loop(const M& mesh, typename M::Vertex_ind
   return loop;
 }
 
-EMesh transformed(EMesh mesh, const KE::Aff_transformation_3& t)
-{
-  for(V v : vertices(mesh))
-    mesh.point(v) = t.transform(mesh.point(v));
-  return mesh;
-}
-
-template <class Function>
-void for_each_mask(Function&& f)
-{
-  f(S::Butterfly_mask<EMesh>());
-  f(S::Modified_butterfly_mask<EMesh>());
-  f(S::Linear_triangle_mask<EMesh>());
-}
-
 } // namespace
 
 // =================================================================== tests
-
-TEST(Butterfly_family, stencils_sum_to_one_exactly_at_valences_3_to_12_and_on_borders)
-{
-  std::vector<std::pair<std::string, EMesh>> meshes;
-  for(int k = 3; k <= 12; ++k) {
-    meshes.emplace_back("bipyramid " + std::to_string(k), bipyramid(k));
-    meshes.emplace_back("fan " + std::to_string(k), fan(k));
-  }
-  meshes.emplace_back("grid", random_height_grid(6, 5).mesh);
-  meshes.emplace_back("strip", random_height_grid(6, 1).mesh); // interior edges with both ends on the border
-  meshes.emplace_back("triangle", random_height_grid(1, 1).mesh);
-  if(testing_utils::have_shared_data())
-    for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/star.off",
-                                  "cgal/corner_tris_with_hole.off", "cgal/tetrahedron.off"}) {
-      Mesh mesh;
-      ASSERT_TRUE(read_shared(name, mesh)) << name;
-      meshes.emplace_back(name, to_exact(mesh));
-    }
-  for(const auto& named : meshes)
-    for_each_mask([&](const auto& mask) { expect_affine_stencils(mask, named.second, named.first); });
-}
-
-TEST(Butterfly_family, old_vertices_are_kept_and_counts_are_v_plus_e_and_4f)
-{
-  std::vector<EMesh> meshes = {bipyramid(5), fan(7), random_height_grid(4, 3).mesh, bipyramid(3)};
-  for(const EMesh& input : meshes)
-    for_each_mask([&](const auto& mask) {
-      EMesh mesh = input;
-      S::subdivide(mesh, mask);
-      ASSERT_EQ(num_vertices(mesh), num_vertices(input) + num_edges(input)) << mask.name();
-      ASSERT_EQ(num_faces(mesh), 4 * num_faces(input)) << mask.name();
-      EXPECT_EQ(num_edges(mesh), 2 * num_edges(input) + 3 * num_faces(input)) << mask.name();
-      EXPECT_TRUE(mesh.is_valid(false)) << mask.name();
-      for(V v : vertices(input))
-        EXPECT_EQ(mesh.point(v), input.point(v)) << mask.name() << ", vertex " << v.idx();
-    });
-}
-
-TEST(Butterfly_family, a_planar_mesh_stays_planar_exactly)
-{
-  // the plane z = (x + 2y)/3 + 1/7, vertices moved inside it off the lattice
-  Rationals r;
-  const auto on_plane = [](const FT& x, const FT& y) -> P { return P(x, y, (x + FT(2) * y) / FT(3) + FT(1) / FT(7)); };
-  const std::vector<EMesh> meshes = {
-    grid(5, 4, [&](int i, int j) { return on_plane(FT(i) + r() / FT(4), FT(j) + r() / FT(4)); }).mesh,
-    fan(
-      5, [&](int i) { return on_plane(FT(i * i % 7) + r(), FT(i) + r()); }, on_plane(FT(2), FT(2))),
-    fan(
-      8, [&](int i) { return on_plane(FT(i * 3 % 5) + r(), FT(i) + r()); }, on_plane(FT(1), FT(3)))};
-  for(const EMesh& input : meshes)
-    for_each_mask([&](const auto& mask) {
-      EMesh mesh = input;
-      S::subdivide(mesh, mask, CGAL::parameters::number_of_iterations(2));
-      for(V v : vertices(mesh)) {
-        const P& p = mesh.point(v);
-        EXPECT_EQ(p, on_plane(p.x(), p.y())) << mask.name() << ", vertex " << v.idx();
-      }
-    });
-}
-
-TEST(Butterfly_family, subdivision_commutes_with_affine_maps_exactly)
-{
-  // valence 7 has irrational modified butterfly weights: their sum is still exactly 1
-  const KE::Aff_transformation_3 t(FT(2), FT(1) / FT(3), FT(-1), FT(5),         //
-                                   FT(0), FT(3) / FT(2), FT(1) / FT(5), FT(-2), //
-                                   FT(1), FT(1), FT(1) / FT(7), FT(1) / FT(9));
-  const std::vector<EMesh> meshes = {bipyramid(7), fan(5), random_height_grid(4, 3).mesh, bipyramid(4)};
-  for(const EMesh& input : meshes)
-    for_each_mask([&](const auto& mask) {
-      EMesh then_map = input, map_then = transformed(input, t);
-      S::subdivide(then_map, mask);
-      S::subdivide(map_then, mask);
-      then_map = transformed(then_map, t);
-      for(V v : vertices(then_map))
-        EXPECT_EQ(then_map.point(v), map_then.point(v)) << mask.name() << ", vertex " << v.idx();
-    });
-}
 
 TEST(Butterfly, regular_edge_is_the_hand_formula_one_half_one_eighth_minus_one_sixteenth)
 {
@@ -505,9 +336,8 @@ TEST(Butterfly_family, tension_out_of_range_is_refused)
 
 TEST(Butterfly_family, quad_mesh_is_refused_and_left_unchanged)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   Mesh quad;
-  ASSERT_TRUE(read_shared("cgal/cube_quad.off", quad));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/cube_quad.off"), quad));
   const std::vector<K::Point_3> before = testing_utils::double_points(quad);
   const std::size_t faces_before = num_faces(quad);
   using Call = std::function<void()>;
@@ -524,15 +354,14 @@ TEST(Butterfly_family, quad_mesh_is_refused_and_left_unchanged)
 
 TEST(Butterfly_family, surface_mesh_polyhedron_and_epeck_agree)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
-  const std::string name = "cgal/mesh_with_border.off";
+  const std::string name = test_mesh("cgal/patch-23.off"); // a border, valences 2 to 8
   CGAL::Polyhedron_3<K> poly;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), poly));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(name, poly));
   CGAL::Surface_mesh<Epeck::Point_3> exact;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), exact));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(name, exact));
   Mesh sm;
-  ASSERT_TRUE(read_shared(name, sm));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(name, sm));
   for(int scheme = 0; scheme < 3; ++scheme) {
     auto p = poly;
     auto e = exact;
@@ -559,26 +388,40 @@ TEST(Butterfly_family, surface_mesh_polyhedron_and_epeck_agree)
   }
 }
 
+namespace {
+
+void expect_two_valid_levels(const std::string& path)
+{
+  for(int scheme = 0; scheme < 3; ++scheme) {
+    Mesh mesh;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, mesh)) << path;
+    const std::size_t v = num_vertices(mesh), e = num_edges(mesh), f = num_faces(mesh);
+    const auto np = CGAL::parameters::number_of_iterations(2);
+    if(scheme == 0)
+      S::butterfly_subdivision(mesh, np);
+    else if(scheme == 1)
+      S::modified_butterfly_subdivision(mesh, np);
+    else
+      S::linear_triangle_subdivision(mesh, np);
+    EXPECT_TRUE(mesh.is_valid(false)) << path << " " << scheme;
+    EXPECT_EQ(num_faces(mesh), 16 * f) << path;
+    EXPECT_EQ(num_vertices(mesh), v + e + (2 * e + 3 * f)) << path; // level 2 adds one per level-1 edge
+    for(auto w : vertices(mesh))
+      EXPECT_TRUE(std::isfinite(mesh.point(w).x()));
+  }
+}
+
+} // namespace
+
 TEST(Butterfly_family, meshes_with_borders_run_two_levels_and_stay_valid)
 {
+  for(const std::string name : {"cgal/corner_tris_with_hole.off", "cgal/patch-23.off"})
+    expect_two_valid_levels(test_mesh(name));
+}
+
+TEST(Butterfly_family, larger_shared_meshes_run_two_levels_and_stay_valid)
+{
   SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off",
-                                "cgal/corner_tris_with_hole.off", "cgal/patch-23.off", "cgal/elephant.off"})
-    for(int scheme = 0; scheme < 3; ++scheme) {
-      Mesh mesh;
-      ASSERT_TRUE(read_shared(name, mesh)) << name;
-      const std::size_t v = num_vertices(mesh), e = num_edges(mesh), f = num_faces(mesh);
-      const auto np = CGAL::parameters::number_of_iterations(2);
-      if(scheme == 0)
-        S::butterfly_subdivision(mesh, np);
-      else if(scheme == 1)
-        S::modified_butterfly_subdivision(mesh, np);
-      else
-        S::linear_triangle_subdivision(mesh, np);
-      EXPECT_TRUE(mesh.is_valid(false)) << name << " " << scheme;
-      EXPECT_EQ(num_faces(mesh), 16 * f) << name;
-      EXPECT_EQ(num_vertices(mesh), v + e + (2 * e + 3 * f)) << name; // level 2 adds one per level-1 edge
-      for(auto w : vertices(mesh))
-        EXPECT_TRUE(std::isfinite(mesh.point(w).x()));
-    }
+  for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/elephant.off"})
+    expect_two_valid_levels(shared_mesh(name));
 }

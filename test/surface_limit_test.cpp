@@ -11,6 +11,7 @@
 #include <CGAL/Subdiv/masks/Sqrt3_mask.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 
+#include "mesh_builders.h"
 #include "mesh_test_utils.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -39,48 +40,30 @@ using Warren_loop = SD::Loop_warren_mask<M, N>;
 
 const double pi = 3.14159265358979323846;
 
-template <class SM>
-SM mesh_of(const std::vector<std::array<double, 3>>& points, const std::vector<std::vector<int>>& faces)
-{
-  using P = typename SM::Point;
-  SM mesh;
-  std::vector<typename SM::Vertex_index> v;
-  for(const auto& p : points)
-    v.push_back(mesh.add_vertex(P(p[0], p[1], p[2])));
-  for(const auto& f : faces) {
-    std::vector<typename SM::Vertex_index> corners;
-    for(int i : f)
-      corners.push_back(v[static_cast<std::size_t>(i)]);
-    EXPECT_NE(mesh.add_face(corners), SM::null_face());
-  }
-  return mesh;
-}
-
 template <class SM = Mesh>
 SM tetrahedron()
 {
-  return mesh_of<SM>({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}});
+  return testing_utils::tetrahedron<SM>();
 }
 
 template <class SM = Mesh>
 SM cube()
 {
-  return mesh_of<SM>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
-                     {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+  return testing_utils::cube<SM>();
 }
 
 // the icosahedron, vertices on the unit sphere, faces outward
 Mesh icosahedron()
 {
   const double t = (1 + std::sqrt(5.0)) / 2, s = 1 / std::sqrt(1 + t * t);
-  std::vector<std::array<double, 3>> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-                                          {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<K::Point_3> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                               {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for(auto& q : p)
-    for(double& c : q)
-      c *= s;
-  return mesh_of<Mesh>(p, {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                           {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                           {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
+    q = K::Point_3(q.x() * s, q.y() * s, q.z() * s);
+  return testing_utils::mesh_of<Mesh>(
+    p, {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
 }
 
 // an n x m grid in the plane z = 0, counter-clockwise seen from +z; triangles
@@ -88,26 +71,9 @@ Mesh icosahedron()
 template <class SM = Mesh>
 SM grid(int n, int m, bool triangles)
 {
-  std::vector<std::array<double, 3>> points;
-  for(int j = 0; j <= m; ++j)
-    for(int i = 0; i <= n; ++i)
-      points.push_back({double(i), double(j), 0});
-  std::vector<std::vector<int>> faces;
-  const auto id = [&](int i, int j) { return j * (n + 1) + i; };
-  for(int j = 0; j < m; ++j)
-    for(int i = 0; i < n; ++i) {
-      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if(!triangles)
-        faces.push_back({a, b, c, d});
-      else if((i + j) % 2 == 0) {
-        faces.push_back({a, b, c});
-        faces.push_back({a, c, d});
-      } else {
-        faces.push_back({a, b, d});
-        faces.push_back({b, c, d});
-      }
-    }
-  return mesh_of<SM>(points, faces);
+  using P = typename SM::Point;
+  return testing_utils::grid<SM>(
+    n, m, [](int i, int j) { return P(i, j, 0); }, triangles, testing_utils::Diagonal::alternating);
 }
 
 double distance(const K::Point_3& a, const K::Point_3& b)
@@ -779,7 +745,8 @@ TEST(LimitErrors, refusals_name_the_problem)
             }).find("needs a mesh whose faces all have 3 vertices"),
             std::string::npos);
   // Doo-Sabin at an interior vertex of valence 2 (two quads glued along their border): no vertex face
-  Mesh pillow = mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}});
+  Mesh pillow =
+    testing_utils::mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}});
   const std::string dual =
     testing_utils::bad_input_message([&] { SD::project_to_limit(pillow, SD::Doo_sabin_mask<decltype(pillow)>()); });
   EXPECT_NE(dual.find("project_to_limit (Doo-Sabin): vertex 0: "), std::string::npos) << dual;

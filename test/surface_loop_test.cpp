@@ -1,7 +1,6 @@
 // Loop subdivision: agreement with CGAL's Subdivision_method_3, exact weights, bad input.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
-#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Surface_mesh.h>
@@ -12,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_builders.h"
 #include "mesh_test_utils.h"
 
 #include <algorithm>
@@ -25,35 +25,38 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
 using testing_utils::position_mismatch;
 using testing_utils::shared_mesh;
+using testing_utils::test_mesh;
+
+namespace {
+
+// two levels of ours and of CGAL's Loop_subdivision on the mesh in `path`
+void expect_same_as_cgal(const std::string& path)
+{
+  Mesh ours, theirs;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, ours)) << path;
+  theirs = ours;
+  S::loop_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+  CGAL::Subdivision_method_3::Loop_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+  ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << path;
+  ASSERT_EQ(num_faces(ours), num_faces(theirs)) << path;
+  EXPECT_TRUE(ours.is_valid(false)) << path;
+  EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << path;
+}
+
+} // namespace
 
 TEST(Loop, matches_cgal_subdivision_method_3_closed_and_with_border)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/elephant.off", "cgal/mesh_with_border.off", "cgal/tetrahedron.off"}) {
-    Mesh ours, theirs;
-    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), ours)) << name;
-    theirs = ours;
-    S::loop_subdivision(ours, CGAL::parameters::number_of_iterations(2));
-    CGAL::Subdivision_method_3::Loop_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
-    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
-    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
-    EXPECT_TRUE(ours.is_valid(false)) << name;
-    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
-  }
+  // valence 3; valence 5; a border and valences 4 to 10
+  for(const std::string name : {"cgal/tetrahedron.off", "cgal/icosahedron.off", "cgal/corner_tris_with_hole.off"})
+    expect_same_as_cgal(test_mesh(name));
 }
 
-TEST(Loop, works_on_polyhedron_3)
+TEST(Loop, larger_shared_meshes_agree_with_cgal_subdivision_method_3)
 {
   SUBDIV_REQUIRE_SHARED_DATA();
-  CGAL::Polyhedron_3<K> poly;
-  Mesh sm;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/mesh_with_border.off"), poly));
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/mesh_with_border.off"), sm));
-  S::loop_subdivision(poly, CGAL::parameters::number_of_iterations(2));
-  S::loop_subdivision(sm, CGAL::parameters::number_of_iterations(2));
-  EXPECT_TRUE(poly.is_valid());
-  EXPECT_EQ(num_vertices(poly), num_vertices(sm));
-  EXPECT_LT(position_mismatch(poly, sm), 1e-14);
+  for(const std::string name : {"cgal/elephant.off", "cgal/mesh_with_border.off"})
+    expect_same_as_cgal(shared_mesh(name));
 }
 
 TEST(Loop, exact_kernel_weights_and_counts)
@@ -61,21 +64,16 @@ TEST(Loop, exact_kernel_weights_and_counts)
   using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
   using P = KE::Point_3;
   using FT = KE::FT;
-  CGAL::Surface_mesh<P> octahedron; // every vertex has valence 4: Loop's beta 31/256 is rational there
-  const P top(0, 0, 1), bottom(0, 0, -1), e[4] = {P(1, 0, 0), P(0, 1, 0), P(-1, 0, 0), P(0, -1, 0)};
-  auto t = octahedron.add_vertex(top), b = octahedron.add_vertex(bottom);
-  decltype(t) ring[4];
-  for(int i = 0; i < 4; ++i)
-    ring[i] = octahedron.add_vertex(e[i]);
-  for(int i = 0; i < 4; ++i) {
-    octahedron.add_face(t, ring[i], ring[(i + 1) % 4]);
-    octahedron.add_face(b, ring[(i + 1) % 4], ring[i]);
-  }
+  // the octahedron, a bipyramid over a square: every vertex has valence 4,
+  // where Loop's beta 31/256 is rational
+  using Octahedron = CGAL::Surface_mesh<P>;
+  const P e[4] = {P(1, 0, 0), P(0, 1, 0), P(-1, 0, 0), P(0, -1, 0)};
+  Octahedron octahedron = testing_utils::bipyramid<Octahedron>(4, P(0, 0, 1), P(0, 0, -1), [&](int i) { return e[i]; });
   S::loop_subdivision(octahedron);
   EXPECT_EQ(num_vertices(octahedron), 6u + 12u);
   EXPECT_EQ(num_faces(octahedron), 32u);
   // old vertex: (1 - 4 beta) top + beta * (sum of the ring, which is 0): z = 1 - 124/256
-  const P moved_top = octahedron.point(decltype(t)(0));
+  const P moved_top = octahedron.point(Octahedron::Vertex_index(0));
   EXPECT_EQ(moved_top, P(0, 0, FT(1) - FT(4 * 31) / FT(256)));
   // edge top-e0: 3/8 top + 3/8 e0 + 1/8 e1 + 1/8 e3 = (3/8, 0, 3/8)
   bool found = false;
@@ -86,17 +84,15 @@ TEST(Loop, exact_kernel_weights_and_counts)
 
 TEST(Loop, epeck_mesh_compiles_and_runs)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   using KE = CGAL::Exact_predicates_exact_constructions_kernel;
   CGAL::Surface_mesh<KE::Point_3> mesh;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), mesh));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), mesh));
   S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
   EXPECT_EQ(num_faces(mesh), 64u);
 }
 
 TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   const auto message = [](Mesh& mesh, int levels = 1) -> std::string {
     try {
       S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
@@ -109,20 +105,20 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_NE(message(empty).find("empty"), std::string::npos);
 
   Mesh quad;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/cube_quad.off"), quad));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/cube_quad.off"), quad));
   const Mesh quad_copy = quad;
   const std::string not_triangles = message(quad);
   EXPECT_NE(not_triangles.find("faces all have 3 vertices; face 0 has 4"), std::string::npos) << not_triangles;
   EXPECT_EQ(num_faces(quad), num_faces(quad_copy));
 
   Mesh isolated;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), isolated));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), isolated));
   isolated.add_vertex(K::Point_3(5, 5, 5));
   EXPECT_NE(message(isolated).find("vertex 4 is isolated"), std::string::npos) << message(isolated);
   EXPECT_EQ(num_faces(isolated), 4u);
 
   Mesh broken;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/tetrahedron.off"), broken));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), broken));
   broken.point(decltype(broken)::Vertex_index(2)) = K::Point_3(std::nan(""), 0, 0);
   EXPECT_NE(message(broken).find("vertex 2 has a non-finite coordinate"), std::string::npos);
 
@@ -136,52 +132,72 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   const std::string pinched_message = message(pinched);
   EXPECT_NE(pinched_message.find("vertex 0 is non-manifold"), std::string::npos) << pinched_message;
 
+  // 40 levels: 80 faces times 4^40 would not fit in any memory
   Mesh big;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/elephant.off"), big));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/icosahedron.off"), big));
   EXPECT_NE(message(big, 40).find("memory"), std::string::npos);
   EXPECT_NE(message(big, -1).find("negative"), std::string::npos);
-  EXPECT_EQ(num_faces(big), 5558u);
+  EXPECT_EQ(num_faces(big), 20u);
 }
 
 // OpenSubdiv's Hbr reference results: <shape>_levelN.obj holds N+1 uniform steps
 // of opensubdiv/<shape>.obj, written from single-precision floats.
+namespace {
+
+struct Opensubdiv_case
+{
+  std::string shape;
+  S::Border_corners corners;
+  int last_level; // the last baseline compared
+};
+
+void expect_opensubdiv_results(const Opensubdiv_case& c, std::string (*path)(const std::string&))
+{
+  Mesh mesh;
+  ASSERT_TRUE(testing_utils::read_obj_positions(path("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
+  for(int level = 0; level <= c.last_level; ++level) {
+    S::subdivide(mesh, S::Loop_mask<Mesh>(c.corners));
+    Mesh reference;
+    ASSERT_TRUE(testing_utils::read_obj_positions(
+      path("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
+    ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
+    ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
+    EXPECT_LT(position_mismatch(mesh, reference), 1e-6) << c.shape << " level " << level;
+  }
+}
+
+} // namespace
+
+// the bundled baselines: a closed shape and a shape with sharp border corners
 TEST(Loop, matches_opensubdiv_reference_results)
 {
+  for(const Opensubdiv_case& c : {Opensubdiv_case{"loop_cube", S::Border_corners::smooth, 1},
+                                  Opensubdiv_case{"loop_saddle_edgecorner", S::Border_corners::sharp, 2},
+                                  Opensubdiv_case{"loop_triangle_edgecorner", S::Border_corners::sharp, 0}})
+    expect_opensubdiv_results(c, test_mesh);
+}
+
+// every baseline of the shapes: loop_cube and loop_icosahedron are closed; the
+// two *_edgecorner shapes use OpenSubdiv's "edges and corners" boundary rule:
+// Border_corners::sharp
+TEST(Loop, every_level_of_the_shared_opensubdiv_baselines)
+{
   SUBDIV_REQUIRE_SHARED_DATA();
-  struct Case
-  {
-    std::string shape;
-    S::Border_corners corners;
-  };
-  // loop_cube and loop_icosahedron are closed; the two *_edgecorner shapes use
-  // OpenSubdiv's "edges and corners" boundary rule: Border_corners::sharp
-  for(const Case& c :
-      {Case{"loop_cube", S::Border_corners::smooth}, Case{"loop_icosahedron", S::Border_corners::smooth},
-       Case{"loop_saddle_edgecorner", S::Border_corners::sharp},
-       Case{"loop_triangle_edgecorner", S::Border_corners::sharp}}) {
-    Mesh mesh;
-    ASSERT_TRUE(testing_utils::read_obj_positions(shared_mesh("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
-    for(int level = 0; level <= 2; ++level) {
-      S::subdivide(mesh, S::Loop_mask<Mesh>(c.corners));
-      Mesh reference;
-      ASSERT_TRUE(testing_utils::read_obj_positions(
-        shared_mesh("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
-      ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
-      ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
-      EXPECT_LT(position_mismatch(mesh, reference), 1e-6) << c.shape << " level " << level;
-    }
-  }
+  for(const Opensubdiv_case& c : {Opensubdiv_case{"loop_cube", S::Border_corners::smooth, 2},
+                                  Opensubdiv_case{"loop_icosahedron", S::Border_corners::smooth, 2},
+                                  Opensubdiv_case{"loop_saddle_edgecorner", S::Border_corners::sharp, 2},
+                                  Opensubdiv_case{"loop_triangle_edgecorner", S::Border_corners::sharp, 2}})
+    expect_opensubdiv_results(c, shared_mesh);
 }
 
 // The deliberate difference: by default a border corner follows the smooth
 // border rule (as in CGAL), which OpenSubdiv's "edges and corners" mode does not.
 TEST(Loop, default_border_corners_differ_from_opensubdiv_edge_and_corner_mode)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   Mesh smooth, reference;
-  ASSERT_TRUE(testing_utils::read_obj_positions(shared_mesh("opensubdiv/loop_triangle_edgecorner.obj"), smooth));
+  ASSERT_TRUE(testing_utils::read_obj_positions(test_mesh("opensubdiv/loop_triangle_edgecorner.obj"), smooth));
   ASSERT_TRUE(testing_utils::read_obj_positions(
-    shared_mesh("opensubdiv_hbr_baseline/loop_triangle_edgecorner_level0.obj"), reference));
+    test_mesh("opensubdiv_hbr_baseline/loop_triangle_edgecorner_level0.obj"), reference));
   S::loop_subdivision(smooth);
   EXPECT_GT(position_mismatch(smooth, reference), 1e-3);
 }
@@ -191,49 +207,6 @@ namespace {
 using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
 using Exact_mesh = CGAL::Surface_mesh<KE::Point_3>;
 using EFT = KE::FT;
-
-// a closed bipyramid: two apexes of valence n over a ring of n vertices of valence 4
-Exact_mesh bipyramid(int n)
-{
-  Exact_mesh mesh;
-  const auto top = mesh.add_vertex(KE::Point_3(0, 0, 2)), bottom = mesh.add_vertex(KE::Point_3(1, 0, -3));
-  std::vector<Exact_mesh::Vertex_index> ring;
-  for(int i = 0; i < n; ++i) // rational points near a circle
-    ring.push_back(mesh.add_vertex(KE::Point_3(EFT(10 * (i % 3) + i), EFT(i * i % 7) - EFT(3), EFT(i % 2))));
-  for(int i = 0; i < n; ++i) {
-    mesh.add_face(top, ring[i], ring[(i + 1) % n]);
-    mesh.add_face(bottom, ring[(i + 1) % n], ring[i]);
-  }
-  return mesh;
-}
-
-// an open fan: a centre vertex with n triangles around it, the last one missing (border)
-Exact_mesh open_fan(int n)
-{
-  Exact_mesh mesh;
-  const auto centre = mesh.add_vertex(KE::Point_3(0, 0, 0));
-  std::vector<Exact_mesh::Vertex_index> ring;
-  for(int i = 0; i <= n; ++i)
-    ring.push_back(mesh.add_vertex(KE::Point_3(EFT(i + 1), EFT(i * i - 2), EFT(i % 3))));
-  for(int i = 0; i < n; ++i)
-    mesh.add_face(centre, ring[i], ring[i + 1]);
-  return mesh;
-}
-
-template <class Mask>
-void expect_every_stencil_sums_to_one(const Exact_mesh& mesh, const Mask& mask)
-{
-  for(auto v : vertices(mesh)) {
-    S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
-    mask.vertex_node(S::vertex_view(mask, mesh, v), stencil);
-    EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " vertex " << v;
-  }
-  for(auto e : edges(mesh)) {
-    S::Stencil<Exact_mesh::Vertex_index, EFT> stencil;
-    mask.edge_node(S::edge_view(mask, mesh, halfedge(e, mesh)), stencil);
-    EXPECT_EQ(stencil.weight_sum(), EFT(1)) << mask.name() << " edge " << e;
-  }
-}
 
 } // namespace
 
@@ -249,63 +222,21 @@ TEST(Loop, vertex_weights_of_loop_and_warren)
   // Warren: 3/(8n), and 3/16 at valence 3; the lecture notes' valence-8 example 5/8 + 8 * 3/64
   EXPECT_EQ(S::Warren_beta::beta<EFT>(3), EFT(3) / EFT(16));
   EXPECT_EQ(S::Warren_beta::beta<EFT>(8), EFT(3) / EFT(64));
-  const Exact_mesh mesh = bipyramid(8);
+  const Exact_mesh mesh = testing_utils::bipyramid<Exact_mesh>(8);
   S::Stencil<Exact_mesh::Vertex_index, EFT> apex, low_valence;
   const S::Loop_mask<Exact_mesh, EFT, S::Warren_beta> warren;
   warren.vertex_node(S::vertex_view(warren, mesh, Exact_mesh::Vertex_index(0)), apex);
   EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(0)), EFT(5) / EFT(8));
   EXPECT_EQ(apex.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(64));
-  const Exact_mesh tetra_like = bipyramid(3); // apexes of valence 3: 7/16 and 3/16
+  const Exact_mesh tetra_like = testing_utils::bipyramid<Exact_mesh>(3); // apexes of valence 3: 7/16 and 3/16
   warren.vertex_node(S::vertex_view(warren, tetra_like, Exact_mesh::Vertex_index(0)), low_valence);
   EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(0)), EFT(7) / EFT(16));
   EXPECT_EQ(low_valence.weight(Exact_mesh::Vertex_index(2)), EFT(3) / EFT(16));
 }
 
-TEST(Loop, exact_properties_at_valences_3_to_9_and_on_borders)
-{
-  for(int n = 3; n <= 9; ++n) {
-    for(const Exact_mesh& mesh : {bipyramid(n), open_fan(n)}) {
-      expect_every_stencil_sums_to_one(mesh, S::Loop_mask<Exact_mesh>());
-      expect_every_stencil_sums_to_one(mesh, S::Loop_mask<Exact_mesh, EFT, S::Warren_beta>());
-
-      // counts: V + E vertices, 4F faces, Euler characteristic kept
-      Exact_mesh refined = mesh;
-      S::loop_warren_subdivision(refined, CGAL::parameters::number_of_iterations(2));
-      const auto euler = [](const Exact_mesh& m) {
-        return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
-      };
-      EXPECT_EQ(num_faces(refined), 16 * num_faces(mesh));
-      EXPECT_EQ(euler(refined), euler(mesh));
-      EXPECT_TRUE(refined.is_valid(false));
-
-      // affine invariance, exactly: subdivide(T(mesh)) == T(subdivide(mesh))
-      const KE::Aff_transformation_3 t(2, 1, 0, 3, 0, 1, 1, -1, 1, 0, 3, 2);
-      Exact_mesh moved = mesh;
-      for(auto v : vertices(moved))
-        moved.point(v) = t.transform(moved.point(v));
-      S::loop_subdivision(moved);
-      Exact_mesh plain = mesh;
-      S::loop_subdivision(plain);
-      for(auto v : vertices(plain))
-        EXPECT_EQ(moved.point(v), t.transform(plain.point(v))) << "valence " << n;
-    }
-  }
-}
-
-TEST(Loop, a_planar_mesh_stays_in_its_plane_exactly)
-{
-  Exact_mesh mesh = open_fan(7);
-  const KE::Plane_3 plane(KE::Point_3(0, 0, 0), KE::Vector_3(1, 2, 5));
-  for(auto v : vertices(mesh)) // project to the plane x + 2y + 5z = 0
-    mesh.point(v) = plane.projection(mesh.point(v));
-  S::loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
-  for(auto v : vertices(mesh))
-    EXPECT_TRUE(plane.has_on(mesh.point(v)));
-}
-
 TEST(Loop, carries_vertex_data_with_the_same_stencils_and_face_data_to_children)
 {
-  Exact_mesh mesh = open_fan(5);
+  Exact_mesh mesh = testing_utils::open_fan<Exact_mesh>(5);
   // a scalar that is a linear function of position, and an exact vector: both
   // must come out as that function of the new positions
   auto height = mesh.add_property_map<Exact_mesh::Vertex_index, EFT>("v:height", EFT(0)).first;

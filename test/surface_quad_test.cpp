@@ -1,9 +1,10 @@
 // Catmull-Clark, linear quad split and Doo-Sabin: agreement with CGAL's
-// Subdivision_method_3 and OpenSubdiv, exact weights and invariances, borders,
-// other mesh types, bad input.
+// Subdivision_method_3 and OpenSubdiv, the regular rules, valence-2 vertices,
+// borders, Epeck, bad input. The properties every scheme has (weights summing
+// to one, counts, affine invariance, planarity, Polyhedron_3) are in
+// surface_properties.h.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
-#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_builders.h"
 #include "mesh_test_utils.h"
 
 #include <map>
@@ -32,34 +34,27 @@ using VX = Exact_mesh::Vertex_index;
 
 using testing_utils::position_mismatch;
 using testing_utils::shared_mesh;
+using testing_utils::test_mesh;
 
 namespace {
 
+// a bundled mesh (test/data)
 Mesh read_mesh(const std::string& name)
 {
+  return testing_utils::bundled<Mesh>(name);
+}
+
+Mesh read_shared_mesh(const std::string& name)
+{
   Mesh mesh;
-  const bool obj = name.size() > 4 && name.substr(name.size() - 4) == ".obj";
-  const bool ok = obj ? testing_utils::read_obj_positions(shared_mesh(name), mesh)
-                      : CGAL::IO::read_polygon_mesh(shared_mesh(name), mesh);
-  EXPECT_TRUE(ok) << name;
+  EXPECT_TRUE(testing_utils::read_mesh(shared_mesh(name), mesh)) << name;
   return mesh;
 }
 
 // the same mesh with exact coordinates (doubles convert exactly), same indices
 Exact_mesh to_exact(const Mesh& mesh)
 {
-  Exact_mesh exact;
-  for(auto v : vertices(mesh)) {
-    const K::Point_3& p = mesh.point(v);
-    exact.add_vertex(PX(FX(p.x()), FX(p.y()), FX(p.z())));
-  }
-  for(auto f : faces(mesh)) {
-    std::vector<VX> corners;
-    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      corners.push_back(VX(v.idx()));
-    exact.add_face(corners);
-  }
-  return exact;
+  return testing_utils::copy_mesh<Exact_mesh>(mesh);
 }
 
 template <class M>
@@ -78,51 +73,51 @@ std::size_t corner_count(const M& mesh)
   return c;
 }
 
-// meshes of CGAL's data set, closed, with any face sizes
-const char* const closed_meshes[] = {"cgal/cube_quad.off",   "cgal/corner.off",   "cgal/P.off",
-                                     "cgal/mpi.off",         "cgal/3torus.off",   "cgal/cross_quad.off",
-                                     "cgal/corner_poly.off", "cgal/elephant.off", "cgal/double-torus-example.off"};
-const char* const border_meshes[] = {"cgal/corner_with_hole.off", "cgal/double-torus-3-holes.off",
-                                     "cgal/mesh_with_border.off", "cgal/corner_with_sharp_edge.off",
-                                     "cgal/mesh_with_colors.off"};
+// meshes of CGAL's data set, closed, with any face sizes: bundled (test/data)
+// and larger ones in ../shared/data
+const std::vector<std::string> closed_meshes = {"cgal/cube_quad.off", "cgal/corner.off", "cgal/P.off",
+                                                "cgal/mpi.off",       "cgal/3torus.off", "cgal/corner_poly.off"};
+const std::vector<std::string> border_meshes = {"cgal/corner_with_hole.off", "cgal/double-torus-3-holes.off",
+                                                "cgal/corner_with_sharp_edge.off", "cgal/mesh_with_colors.off"};
+const std::vector<std::string> shared_closed_meshes = {"cgal/cross_quad.off", "cgal/elephant.off",
+                                                       "cgal/double-torus-example.off"};
+const std::vector<std::string> shared_border_meshes = {"cgal/mesh_with_border.off"};
+
+std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b)
+{
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
 
 } // namespace
 
 // ---------------------------------------------------------------------------
 // Agreement with CGAL's Subdivision_method_3
 
-TEST(CatmullClark, matches_cgal_subdivision_method_3_closed_and_with_border)
+namespace {
+
+void expect_catmull_clark_as_cgal(Mesh ours, const std::string& name)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
-  std::vector<std::string> names(std::begin(closed_meshes), std::end(closed_meshes));
-  names.insert(names.end(), std::begin(border_meshes), std::end(border_meshes));
-  for(const std::string& name : names) {
-    Mesh ours = read_mesh(name);
-    Mesh theirs = ours;
-    S::catmull_clark_subdivision(ours, CGAL::parameters::number_of_iterations(2));
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
-    theirs.collect_garbage();
-    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
-    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
-    EXPECT_TRUE(ours.is_valid(false)) << name;
-    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
-  }
+  Mesh theirs = ours;
+  S::catmull_clark_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+  CGAL::Subdivision_method_3::CatmullClark_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+  theirs.collect_garbage();
+  ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
+  ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
+  EXPECT_TRUE(ours.is_valid(false)) << name;
+  EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
 }
 
-TEST(DooSabin, matches_cgal_subdivision_method_3_on_closed_meshes)
+void expect_doo_sabin_as_cgal(Mesh ours, const std::string& name)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : closed_meshes) {
-    Mesh ours = read_mesh(name);
-    Mesh theirs = ours;
-    S::doo_sabin_subdivision(ours, CGAL::parameters::number_of_iterations(2));
-    CGAL::Subdivision_method_3::DooSabin_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
-    theirs.collect_garbage();
-    ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
-    ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
-    EXPECT_TRUE(ours.is_valid(false)) << name;
-    EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
-  }
+  Mesh theirs = ours;
+  S::doo_sabin_subdivision(ours, CGAL::parameters::number_of_iterations(2));
+  CGAL::Subdivision_method_3::DooSabin_subdivision(theirs, CGAL::parameters::number_of_iterations(2));
+  theirs.collect_garbage();
+  ASSERT_EQ(num_vertices(ours), num_vertices(theirs)) << name;
+  ASSERT_EQ(num_faces(ours), num_faces(theirs)) << name;
+  EXPECT_TRUE(ours.is_valid(false)) << name;
+  EXPECT_LT(position_mismatch(ours, theirs), 1e-12) << name;
 }
 
 // With a border, CGAL's Doo-Sabin moves every corner by the face rule and
@@ -130,58 +125,116 @@ TEST(DooSabin, matches_cgal_subdivision_method_3_on_closed_meshes)
 // points and closes border vertices with 3 or more faces. Every new vertex of
 // ours that is not on the border is a vertex of CGAL's result, and CGAL's has
 // the border zigzag of extra faces.
+void expect_doo_sabin_interior_as_cgal(Mesh ours, const std::string& name)
+{
+  Mesh theirs = ours;
+  S::doo_sabin_subdivision(ours);
+  CGAL::Subdivision_method_3::DooSabin_subdivision(theirs);
+  theirs.collect_garbage();
+  EXPECT_TRUE(ours.is_valid(false)) << name;
+  EXPECT_EQ(num_vertices(ours), num_vertices(theirs)) << name; // one per corner in both
+  std::vector<testing_utils::Double_point> inside;
+  for(auto v : vertices(ours))
+    if(!CGAL::is_border(v, ours))
+      inside.push_back(testing_utils::Double_point(ours.point(v)));
+  EXPECT_LT(position_mismatch(inside, testing_utils::double_points(theirs)), 1e-12) << name;
+  EXPECT_GT(position_mismatch(ours, theirs), 1e-3) << name; // the border corners differ
+}
+
+} // namespace
+
+TEST(CatmullClark, matches_cgal_subdivision_method_3_closed_and_with_border)
+{
+  for(const std::string& name : closed_meshes + border_meshes)
+    expect_catmull_clark_as_cgal(read_mesh(name), name);
+}
+
+TEST(DooSabin, matches_cgal_subdivision_method_3_on_closed_meshes)
+{
+  for(const std::string& name : closed_meshes)
+    expect_doo_sabin_as_cgal(read_mesh(name), name);
+}
+
 TEST(DooSabin, interior_agrees_with_cgal_on_meshes_with_border)
 {
+  for(const std::string& name : border_meshes)
+    expect_doo_sabin_interior_as_cgal(read_mesh(name), name);
+}
+
+TEST(QuadSchemes, larger_shared_meshes_agree_with_cgal_subdivision_method_3)
+{
   SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : border_meshes) {
-    Mesh ours = read_mesh(name);
-    Mesh theirs = ours;
-    S::doo_sabin_subdivision(ours);
-    CGAL::Subdivision_method_3::DooSabin_subdivision(theirs);
-    theirs.collect_garbage();
-    EXPECT_TRUE(ours.is_valid(false)) << name;
-    EXPECT_EQ(num_vertices(ours), num_vertices(theirs)) << name; // one per corner in both
-    std::vector<testing_utils::Double_point> inside;
-    for(auto v : vertices(ours))
-      if(!CGAL::is_border(v, ours))
-        inside.push_back(testing_utils::Double_point(ours.point(v)));
-    EXPECT_LT(position_mismatch(inside, testing_utils::double_points(theirs)), 1e-12) << name;
-    EXPECT_GT(position_mismatch(ours, theirs), 1e-3) << name; // the border corners differ
-  }
+  for(const std::string& name : shared_closed_meshes + shared_border_meshes)
+    expect_catmull_clark_as_cgal(read_shared_mesh(name), name);
+  for(const std::string& name : shared_closed_meshes)
+    expect_doo_sabin_as_cgal(read_shared_mesh(name), name);
+  for(const std::string& name : shared_border_meshes)
+    expect_doo_sabin_interior_as_cgal(read_shared_mesh(name), name);
 }
 
 // ---------------------------------------------------------------------------
 // Agreement with OpenSubdiv: <shape>_levelN.obj holds N+1 uniform steps of
 // opensubdiv/<shape>.obj (checked here by the counts), written from floats.
 
+namespace {
+
+struct Opensubdiv_case
+{
+  std::string shape;
+  S::Border_corners corners;
+  int last_level; // the last baseline compared
+};
+
+void expect_opensubdiv_results(const Opensubdiv_case& c, std::string (*path)(const std::string&))
+{
+  Mesh mesh;
+  ASSERT_TRUE(testing_utils::read_mesh(path("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
+  for(int level = 0; level <= c.last_level; ++level) {
+    S::subdivide(mesh, S::Catmull_clark_mask<Mesh>(c.corners));
+    Mesh reference;
+    ASSERT_TRUE(testing_utils::read_mesh(
+      path("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
+    ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
+    ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
+    // the baselines print 6 significant digits: catmark_flap is 0.3 across
+    // at 1.9 from the origin, so its last digit is 1.7e-5 of its size
+    EXPECT_LT(position_mismatch(mesh, reference), 2e-5) << c.shape << " level " << level;
+  }
+}
+
+// catmark_cube and catmark_pyramid are closed; catmark_tent uses "edges
+// only", and catmark_flap has no boundary tag: at their valence-2 corners
+// the baselines follow the smooth border rule 1/8, 6/8, 1/8, as ours by
+// default; catmark_edgecorner uses "edges and corners" (Border_corners::sharp).
+std::vector<Opensubdiv_case> opensubdiv_cases(int last_level)
+{
+  return {{"catmark_cube", S::Border_corners::smooth, last_level},
+          {"catmark_pyramid", S::Border_corners::smooth, last_level},
+          {"catmark_tent", S::Border_corners::smooth, last_level},
+          {"catmark_edgecorner", S::Border_corners::sharp, last_level},
+          {"catmark_flap", S::Border_corners::smooth, last_level}};
+}
+
+} // namespace
+
+// the bundled baselines: every shape's first level, two levels of the closed
+// shapes and three of catmark_flap
 TEST(CatmullClark, matches_opensubdiv_reference_results)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
-  struct Case
-  {
-    std::string shape;
-    S::Border_corners corners;
-  };
-  // catmark_cube and catmark_pyramid are closed; catmark_tent uses "edges
-  // only", and catmark_flap has no boundary tag: at their valence-2 corners
-  // the baselines follow the smooth border rule 1/8, 6/8, 1/8, as ours by
-  // default; catmark_edgecorner uses "edges and corners" (Border_corners::sharp).
-  for(const Case& c :
-      {Case{"catmark_cube", S::Border_corners::smooth}, Case{"catmark_pyramid", S::Border_corners::smooth},
-       Case{"catmark_tent", S::Border_corners::smooth}, Case{"catmark_edgecorner", S::Border_corners::sharp},
-       Case{"catmark_flap", S::Border_corners::smooth}}) {
-    Mesh mesh = read_mesh("opensubdiv/" + c.shape + ".obj");
-    for(int level = 0; level <= 2; ++level) {
-      S::subdivide(mesh, S::Catmull_clark_mask<Mesh>(c.corners));
-      const Mesh reference =
-        read_mesh("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj");
-      ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
-      ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
-      // the baselines print 6 significant digits: catmark_flap is 0.3 across
-      // at 1.9 from the origin, so its last digit is 1.7e-5 of its size
-      EXPECT_LT(position_mismatch(mesh, reference), 2e-5) << c.shape << " level " << level;
-    }
+  const int last_level[] = {1, 1, 0, 0, 2};
+  const std::vector<Opensubdiv_case> cases = opensubdiv_cases(0);
+  for(std::size_t i = 0; i < cases.size(); ++i) {
+    Opensubdiv_case c = cases[i];
+    c.last_level = last_level[i];
+    expect_opensubdiv_results(c, test_mesh);
   }
+}
+
+TEST(CatmullClark, every_level_of_the_shared_opensubdiv_baselines)
+{
+  SUBDIV_REQUIRE_SHARED_DATA();
+  for(const Opensubdiv_case& c : opensubdiv_cases(2))
+    expect_opensubdiv_results(c, shared_mesh);
 }
 
 // The deliberate difference: by default a corner with a single face follows
@@ -189,7 +242,6 @@ TEST(CatmullClark, matches_opensubdiv_reference_results)
 // and corners" keeps it in place.
 TEST(CatmullClark, default_border_corners_differ_from_opensubdiv_edge_and_corner_mode)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   Mesh smooth = read_mesh("opensubdiv/catmark_edgecorner.obj");
   const Mesh reference = read_mesh("opensubdiv_hbr_baseline/catmark_edgecorner_level0.obj");
   S::catmull_clark_subdivision(smooth);
@@ -203,26 +255,11 @@ TEST(CatmullClark, default_border_corners_differ_from_opensubdiv_edge_and_corner
 }
 
 // ---------------------------------------------------------------------------
-// Exact weights
+// The regular rules
 
 namespace {
 
 using Stencil = S::Stencil<VX, FX>;
-
-// every new vertex's weights sum to exactly 1
-template <class Mask>
-void expect_weights_sum_to_one(const Exact_mesh& mesh, const Mask& mask)
-{
-  const S::Host_of<Mask> host(mesh);
-  std::size_t count = 0;
-  S::internal::for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) {
-    Stencil stencil;
-    report(stencil);
-    EXPECT_EQ(stencil.weight_sum(), FX(1)) << mask.name() << ", new vertex " << j;
-    ++count;
-  });
-  EXPECT_EQ(count, host.number_of_new_vertices());
-}
 
 bool same_stencil(const Stencil& a, const Stencil& b)
 {
@@ -234,18 +271,15 @@ bool same_stencil(const Stencil& a, const Stencil& b)
   return true;
 }
 
-// an n x n grid of vertices (i, j, z_ij) with generic rational heights
+// an n x n grid of quads' vertices (i, j, z_ij) with generic rational heights
 Exact_mesh grid(int n, std::vector<std::vector<VX>>& id)
 {
-  Exact_mesh mesh;
   id.assign(n, std::vector<VX>(n));
   for(int i = 0; i < n; ++i)
     for(int j = 0; j < n; ++j)
-      id[i][j] = mesh.add_vertex(PX(i, j, FX(3 * i * i + 7 * j + i * j + 1) / FX(5 + i + 2 * j)));
-  for(int i = 0; i + 1 < n; ++i)
-    for(int j = 0; j + 1 < n; ++j)
-      mesh.add_face(id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]);
-  return mesh;
+      id[i][j] = testing_utils::grid_vertex<Exact_mesh>(n - 1, i, j);
+  return testing_utils::grid<Exact_mesh>(
+    n - 1, n - 1, [](int i, int j) { return PX(i, j, FX(3 * i * i + 7 * j + i * j + 1) / FX(5 + i + 2 * j)); }, false);
 }
 
 // the cubic B-spline curve masks: vertex (1/8, 6/8, 1/8), edge (1/2, 1/2)
@@ -259,20 +293,6 @@ FX edge_mask(int)
 }
 
 } // namespace
-
-TEST(CatmullClark, exact_weights_sum_to_one)
-{
-  SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/mpi.off", "cgal/P.off", "cgal/double-torus-3-holes.off"}) {
-    const Exact_mesh mesh = to_exact(read_mesh(name));
-    expect_weights_sum_to_one(mesh, S::Catmull_clark_mask<Exact_mesh>());
-    expect_weights_sum_to_one(mesh, S::Catmull_clark_mask<Exact_mesh>(S::Border_corners::sharp));
-    expect_weights_sum_to_one(mesh, S::Linear_quad_mask<Exact_mesh>());
-    // Doo-Sabin: also for the 5-, 7-, 8-, 9- and 10-gons of mpi.off, whose
-    // cosines are rounded: the centre weight is 1 minus the others
-    expect_weights_sum_to_one(mesh, S::Doo_sabin_mask<Exact_mesh>());
-  }
-}
 
 // On a regular grid, Catmull-Clark is the bicubic uniform B-spline: its rules
 // are the tensor products of the cubic B-spline curve rules, and in the form
@@ -348,45 +368,13 @@ TEST(DooSabin, quad_weights_are_the_biquadratic_bspline_weights)
 }
 
 // ---------------------------------------------------------------------------
-// Counts, Euler characteristic, affine invariance, planarity (exact)
-
-TEST(QuadSplit, counts_and_euler_characteristic)
-{
-  SUBDIV_REQUIRE_SHARED_DATA();
-  std::vector<std::string> names(std::begin(closed_meshes), std::end(closed_meshes));
-  names.insert(names.end(), std::begin(border_meshes), std::end(border_meshes));
-  for(const std::string& name : names) {
-    const Mesh mesh = read_mesh(name);
-    Mesh cc = mesh;
-    S::catmull_clark_subdivision(cc);
-    EXPECT_EQ(num_vertices(cc), num_vertices(mesh) + num_edges(mesh) + num_faces(mesh)) << name;
-    EXPECT_EQ(num_faces(cc), corner_count(mesh)) << name;
-    EXPECT_EQ(euler_characteristic(cc), euler_characteristic(mesh)) << name;
-    for(auto f : faces(cc))
-      EXPECT_EQ(degree(f, cc), 4u);
-
-    Mesh ds = mesh;
-    S::doo_sabin_subdivision(ds);
-    EXPECT_TRUE(ds.is_valid(false)) << name;
-    EXPECT_EQ(num_vertices(ds), corner_count(mesh)) << name;
-    EXPECT_EQ(euler_characteristic(ds), euler_characteristic(mesh)) << name;
-    std::size_t interior_edges = 0, vertex_faces = 0;
-    for(auto e : edges(mesh))
-      interior_edges += CGAL::is_border(e, mesh) ? 0 : 1;
-    for(auto v : vertices(mesh)) { // interior vertices of valence >= 3, border vertices with >= 3 faces
-      const bool border = bool(CGAL::is_border(v, mesh));
-      vertex_faces += degree(v, mesh) >= (border ? 4u : 3u) ? 1 : 0;
-    }
-    EXPECT_EQ(num_faces(ds), num_faces(mesh) + interior_edges + vertex_faces) << name;
-  }
-}
+// Other cases
 
 // Interior vertices of valence 2 (OpenSubdiv's val2 shapes): Doo-Sabin makes
 // no 2-gon there, the two edge quads share an edge; every scheme gives a
 // valid mesh with the same Euler characteristic.
 TEST(QuadSchemes, interior_valence_2_vertices)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   for(const std::string name : {"opensubdiv/catmark_val2_interior.obj", "opensubdiv/catmark_val2_back2back.obj",
                                 "opensubdiv/catmark_val2_foldover.obj", "opensubdiv/catmark_gregory_test8.obj"}) {
     const Mesh mesh = read_mesh(name);
@@ -409,73 +397,8 @@ TEST(QuadSchemes, interior_valence_2_vertices)
   }
 }
 
-namespace {
-
-PX transform(const PX& p)
-{
-  return PX(FX(2) * p.x() - p.y() / FX(3) + p.z() + FX(1) / FX(7), p.x() / FX(5) + FX(3) * p.y() - FX(2),
-            -p.x() + p.y() / FX(2) + FX(4) * p.z() / FX(3) + FX(5));
-}
-
-template <class Subdivide>
-void expect_affine_invariant(const Exact_mesh& mesh, const Subdivide& subdivide, const std::string& what)
-{
-  Exact_mesh first_moved = mesh, first_refined = mesh;
-  for(auto v : vertices(first_moved))
-    first_moved.point(v) = transform(first_moved.point(v));
-  subdivide(first_moved);
-  subdivide(first_refined);
-  ASSERT_EQ(num_vertices(first_moved), num_vertices(first_refined));
-  for(auto v : vertices(first_refined))
-    ASSERT_EQ(first_moved.point(v), transform(first_refined.point(v))) << what << ", vertex " << v.idx();
-}
-
-} // namespace
-
-TEST(QuadSchemes, exact_affine_invariance)
-{
-  SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/mpi.off", "cgal/double-torus-3-holes.off"}) {
-    const Exact_mesh mesh = to_exact(read_mesh(name));
-    expect_affine_invariant(
-      mesh, [](Exact_mesh& m) { S::catmull_clark_subdivision(m); }, name + " Catmull-Clark");
-    // Doo-Sabin, also over mpi.off's faces of 5 to 10 corners, whose weights are rounded
-    expect_affine_invariant(
-      mesh, [](Exact_mesh& m) { S::doo_sabin_subdivision(m); }, name + " Doo-Sabin");
-    expect_affine_invariant(
-      mesh, [](Exact_mesh& m) { S::linear_quad_subdivision(m); }, name + " linear");
-  }
-}
-
-TEST(QuadSchemes, a_planar_mesh_stays_planar_exactly)
-{
-  SUBDIV_REQUIRE_SHARED_DATA();
-  // mpi.off's and a holed torus' connectivity, flattened onto 3z = x + 2y + 3
-  for(const std::string name : {"cgal/mpi.off", "cgal/double-torus-3-holes.off"}) {
-    Exact_mesh flat = to_exact(read_mesh(name));
-    for(auto v : vertices(flat)) {
-      const PX p = flat.point(v);
-      flat.point(v) = PX(p.x(), p.y(), (p.x() + FX(2) * p.y() + FX(3)) / FX(3));
-    }
-    const auto on_plane = [](const Exact_mesh& m) {
-      for(auto v : vertices(m))
-        if(FX(3) * m.point(v).z() != m.point(v).x() + FX(2) * m.point(v).y() + FX(3))
-          return false;
-      return true;
-    };
-    Exact_mesh cc = flat, ds = flat, linear = flat;
-    S::catmull_clark_subdivision(cc, CGAL::parameters::number_of_iterations(2));
-    S::doo_sabin_subdivision(ds, CGAL::parameters::number_of_iterations(2));
-    S::linear_quad_subdivision(linear);
-    EXPECT_TRUE(on_plane(cc)) << name;
-    EXPECT_TRUE(on_plane(ds)) << name;
-    EXPECT_TRUE(on_plane(linear)) << name;
-  }
-}
-
 TEST(LinearQuad, points_are_the_old_vertices_edge_midpoints_and_face_centroids)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   const Exact_mesh mesh = to_exact(read_mesh("cgal/P.off"));
   std::set<PX> expected;
   for(auto v : vertices(mesh))
@@ -509,7 +432,6 @@ TEST(LinearQuad, points_are_the_old_vertices_edge_midpoints_and_face_centroids)
 // its Chaikin points. Checked exactly, edge by edge.
 TEST(DooSabin, border_is_chaikins_refinement_of_the_border_polygon)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   using Edge = std::pair<PX, PX>;
   const auto edge_of = [](const PX& a, const PX& b) { return a < b ? Edge(a, b) : Edge(b, a); };
   for(const std::string name : {"opensubdiv/catmark_tent.obj", "cgal/double-torus-3-holes.off",
@@ -554,7 +476,6 @@ TEST(DooSabin, border_is_chaikins_refinement_of_the_border_polygon)
 // refinement of the old one (midpoints, and 1/8, 6/8, 1/8 at the vertices).
 TEST(CatmullClark, border_is_the_cubic_bspline_refinement_of_the_border_polygon)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   for(const std::string name : {"opensubdiv/catmark_tent.obj", "cgal/double-torus-3-holes.off"}) {
     const Exact_mesh mesh = to_exact(read_mesh(name));
     std::set<PX> expected;
@@ -578,37 +499,14 @@ TEST(CatmullClark, border_is_the_cubic_bspline_refinement_of_the_border_polygon)
 }
 
 // ---------------------------------------------------------------------------
-// Other mesh types
-
-TEST(QuadSchemes, polyhedron_3_gives_the_surface_mesh_results)
-{
-  SUBDIV_REQUIRE_SHARED_DATA();
-  for(const std::string name : {"cgal/double-torus-3-holes.off", "cgal/mpi.off"}) {
-    CGAL::Polyhedron_3<K> poly_cc, poly_ds;
-    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh(name), poly_cc));
-    poly_ds = poly_cc;
-    Mesh sm_cc = read_mesh(name), sm_ds = sm_cc;
-    S::catmull_clark_subdivision(poly_cc, CGAL::parameters::number_of_iterations(2));
-    S::catmull_clark_subdivision(sm_cc, CGAL::parameters::number_of_iterations(2));
-    S::doo_sabin_subdivision(poly_ds, CGAL::parameters::number_of_iterations(2));
-    S::doo_sabin_subdivision(sm_ds, CGAL::parameters::number_of_iterations(2));
-    EXPECT_TRUE(poly_cc.is_valid() && poly_ds.is_valid()) << name;
-    EXPECT_EQ(num_vertices(poly_cc), num_vertices(sm_cc)) << name;
-    EXPECT_EQ(num_faces(poly_cc), num_faces(sm_cc)) << name;
-    EXPECT_EQ(num_vertices(poly_ds), num_vertices(sm_ds)) << name;
-    EXPECT_EQ(num_faces(poly_ds), num_faces(sm_ds)) << name;
-    EXPECT_LT(position_mismatch(poly_cc, sm_cc), 1e-14) << name;
-    EXPECT_LT(position_mismatch(poly_ds, sm_ds), 1e-14) << name;
-  }
-}
+// Other kernels
 
 TEST(QuadSchemes, epeck_mesh_compiles_and_runs)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   using KE = CGAL::Exact_predicates_exact_constructions_kernel;
   using EpeckMesh = CGAL::Surface_mesh<KE::Point_3>;
   EpeckMesh cube;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_mesh("cgal/cube_quad.off"), cube));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/cube_quad.off"), cube));
   EpeckMesh cc = cube, ds = cube, linear = cube;
   S::catmull_clark_subdivision(cc, CGAL::parameters::number_of_iterations(2));
   S::doo_sabin_subdivision(ds, CGAL::parameters::number_of_iterations(2));
@@ -631,7 +529,6 @@ TEST(QuadSchemes, epeck_mesh_compiles_and_runs)
 
 TEST(QuadSchemes, bad_input_is_refused_and_the_mesh_is_unchanged)
 {
-  SUBDIV_REQUIRE_SHARED_DATA();
   Mesh empty;
   const std::string empty_message = testing_utils::bad_input_message([&] { S::catmull_clark_subdivision(empty); });
   EXPECT_NE(empty_message.find("Catmull-Clark: the mesh is empty"), std::string::npos) << empty_message;
