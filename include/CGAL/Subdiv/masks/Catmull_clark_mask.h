@@ -103,16 +103,8 @@ public:
   template <class Accumulator>
   void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
-    switch(view.rule()) {
-      case Vertex_rule::corner:
-        acc.add(view.vertex(), FT(1));
-        return;
-      case Vertex_rule::crease:
-        m_border.vertex_point(view, acc);
-        return;
-      case Vertex_rule::smooth:
-        break;
-    }
+    if(m_border.sharp_vertex_point(view, acc))
+      return;
     const Mesh& mesh = view.mesh();
     const vertex_descriptor v = view.vertex();
     const int n = view.valence();

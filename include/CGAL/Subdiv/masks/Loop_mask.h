@@ -61,16 +61,8 @@ public:
   template <class Accumulator>
   void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    switch(v.rule()) {
-      case Vertex_rule::corner:
-        acc.add(v.vertex(), FT(1));
-        return;
-      case Vertex_rule::crease:
-        m_border.vertex_point(v, acc);
-        return;
-      case Vertex_rule::smooth:
-        break;
-    }
+    if(m_border.sharp_vertex_point(v, acc))
+      return;
     const int n = v.valence();
     const FT beta = Beta::template beta<FT>(n);
     acc.add(v.vertex(), FT(1) - FT(n) * beta);
