@@ -26,8 +26,9 @@ function(subdiv_cli_test name)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 60)
   endif()
+  subdiv_timeout(timeout ${T_TIMEOUT})
   add_test(NAME cli_${name} COMMAND ${CMAKE_COMMAND} ${defs} -P ${SUBDIV_CLI_DIR}/run_cli.cmake)
-  set_tests_properties(cli_${name} PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS cli)
+  set_tests_properties(cli_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
 endfunction()
 
 # an error: exit code, one line on stderr that matches, no output file
@@ -317,7 +318,8 @@ function(subdiv_analyse_json name check)
            COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:cgal-subdiv> -DPYTHON=${Python3_EXECUTABLE}
                    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/analyse_json_${name} "-DARGS=${args}" -DCASE=${check}
                    -P ${SUBDIV_CLI_DIR}/run_analyse_json.cmake)
-  set_tests_properties(cli_analyse_json_${name} PROPERTIES TIMEOUT 60 LABELS cli)
+  subdiv_timeout(timeout 60)
+  set_tests_properties(cli_analyse_json_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
 endfunction()
 subdiv_analyse_json(loop_3 loop3 analyse --scheme loop --valence 3 --json)
 subdiv_analyse_json(loop_6 loop6 analyse --scheme loop --valence 6 --json)

@@ -9,7 +9,8 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
                      -DFRESH=${CMAKE_CURRENT_BINARY_DIR}/doc_tables
                      -DCOMMITTED=${PROJECT_SOURCE_DIR}/doc/tables
                      -P ${CMAKE_CURRENT_LIST_FILE})
-    set_tests_properties(doc_tables PROPERTIES TIMEOUT 300 LABELS doc)
+    subdiv_timeout(timeout 300)
+    set_tests_properties(doc_tables PROPERTIES TIMEOUT ${timeout} LABELS doc)
   endif()
   return()
 endif()

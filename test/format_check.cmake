@@ -6,5 +6,6 @@
 find_program(SUBDIV_BASH bash)
 if(SUBDIV_BASH)
   add_test(NAME format_check COMMAND ${SUBDIV_BASH} ${PROJECT_SOURCE_DIR}/src/scripts/check_format.sh)
-  set_tests_properties(format_check PROPERTIES LABELS format SKIP_RETURN_CODE 77 TIMEOUT 120)
+  subdiv_timeout(timeout 120)
+  set_tests_properties(format_check PROPERTIES LABELS format SKIP_RETURN_CODE 77 TIMEOUT ${timeout})
 endif()

@@ -18,7 +18,8 @@ foreach(source ${SUBDIV_EXAMPLE_SOURCES})
   target_link_libraries(example_${name} PRIVATE CGAL::Subdiv subdiv_warnings)
   target_compile_definitions(example_${name} PRIVATE SUBDIV_EXAMPLE_DATA_DIR="${PROJECT_SOURCE_DIR}/doc/data")
   add_test(NAME example.${name} COMMAND example_${name})
-  set_tests_properties(example.${name} PROPERTIES LABELS example TIMEOUT 120)
+  subdiv_timeout(timeout 120)
+  set_tests_properties(example.${name} PROPERTIES LABELS example TIMEOUT ${timeout})
 endforeach()
 
 add_test(NAME install.consumer
@@ -33,4 +34,5 @@ add_test(NAME install.consumer
     -DBUILD_TYPE=$<CONFIG>
     -P ${CMAKE_CURRENT_SOURCE_DIR}/install/install_and_consume.cmake)
 # compiling the consumer (CGAL, GMP) takes a while on a loaded machine
-set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT 900)
+subdiv_timeout(timeout 900)
+set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT ${timeout})

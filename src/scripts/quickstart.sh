@@ -133,6 +133,7 @@ sanitizer_job() {
   say "configuring $build_asan (ASan + UBSan: $flags)"
   cmake -S "$root" -B "$build_asan" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSUBDIV_WARNINGS_AS_ERRORS=OFF \
+    -DSUBDIV_TEST_TIMEOUT_SCALE=10 \
     -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null ||
     die "cmake configuration of $build_asan failed (run: cmake -S . -B build-asan to see why)"
   say "building ${SANITIZER_TARGETS[*]} with sanitizers, $jobs jobs"
