@@ -5,9 +5,11 @@
 #include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <gtest/gtest.h>
 
+#include "mesh_builders.h"
 #include "mesh_test_utils.h"
 #include "threads_test_utils.h"
 
@@ -104,6 +106,12 @@ TEST(Stencil_table, refuses_what_subdivide_refuses_and_mismatched_inputs)
   EXPECT_NE(testing_utils::bad_input_message([&] {
               S::make_stencil_table(empty, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
             }).find("empty"),
+            std::string::npos);
+  Mesh with_garbage = open_bipyramid_piece();
+  CGAL::Euler::remove_face(halfedge(*faces(with_garbage).begin(), with_garbage), with_garbage);
+  EXPECT_NE(testing_utils::bad_input_message([&] {
+              S::make_stencil_table(with_garbage, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
+            }).find(": the mesh still holds removed elements (garbage); call collect_garbage()"),
             std::string::npos);
   const auto table =
     S::make_stencil_table(open_bipyramid_piece(), S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(1));
@@ -206,26 +214,10 @@ using Double_mesh = CGAL::Surface_mesh<KD::Point_3>;
 // along alternating diagonals (Loop): valences 2 to 8, corners, a border
 Double_mesh bumpy_grid(bool triangles, int n = 7)
 {
-  Double_mesh mesh;
-  std::vector<Double_mesh::Vertex_index> v;
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j <= n; ++j)
-      v.push_back(mesh.add_vertex(KD::Point_3(i + 0.1 * std::sin(3.0 * j), j, std::cos(0.7 * i) * std::sin(0.9 * j))));
-  const auto at = [&](int i, int j) { return v[static_cast<std::size_t>(i * (n + 1) + j)]; };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j) {
-      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      if(!triangles)
-        mesh.add_face(a, b, c, d);
-      else if((i + j) % 3 == 0) {
-        mesh.add_face(a, b, c);
-        mesh.add_face(a, c, d);
-      } else {
-        mesh.add_face(a, b, d);
-        mesh.add_face(b, c, d);
-      }
-    }
-  return mesh;
+  return testing_utils::grid<Double_mesh>(
+    n, n,
+    [](int i, int j) { return KD::Point_3(i + 0.1 * std::sin(3.0 * j), j, std::cos(0.7 * i) * std::sin(0.9 * j)); },
+    triangles, [](int i, int j) { return (i + j) % 3 == 0; });
 }
 
 template <template <class, class> class MaskTemplate>

@@ -4,6 +4,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -13,6 +14,7 @@
 
 #include "mesh_builders.h"
 #include "mesh_test_utils.h"
+#include "opensubdiv_baselines.h"
 
 #include <algorithm>
 #include <map>
@@ -23,6 +25,7 @@ namespace S = CGAL::Subdiv;
 using K = CGAL::Simple_cartesian<double>;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
+using testing_utils::Opensubdiv_case;
 using testing_utils::position_mismatch;
 using testing_utils::shared_mesh;
 using testing_utils::test_mesh;
@@ -117,6 +120,21 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_NE(message(isolated).find("vertex 4 is isolated"), std::string::npos) << message(isolated);
   EXPECT_EQ(num_faces(isolated), 4u);
 
+  // a Surface_mesh that still holds a removed face: refused, with the fix
+  Mesh with_garbage;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/icosahedron.off"), with_garbage));
+  CGAL::Euler::remove_face(halfedge(*faces(with_garbage).begin(), with_garbage), with_garbage);
+  ASSERT_TRUE(with_garbage.has_garbage());
+  const std::string garbage_message = message(with_garbage);
+  EXPECT_NE(garbage_message.find(": the mesh still holds removed elements (garbage); call collect_garbage()"),
+            std::string::npos)
+    << garbage_message;
+  EXPECT_EQ(with_garbage.number_of_faces(), 19u);
+  EXPECT_TRUE(with_garbage.has_garbage());
+  with_garbage.collect_garbage();
+  EXPECT_EQ(message(with_garbage), "no exception");
+  EXPECT_EQ(with_garbage.number_of_faces(), 76u);
+
   Mesh broken;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), broken));
   broken.point(decltype(broken)::Vertex_index(2)) = K::Point_3(std::nan(""), 0, 0);
@@ -140,32 +158,13 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_EQ(num_faces(big), 20u);
 }
 
-// OpenSubdiv's Hbr reference results: <shape>_levelN.obj holds N+1 uniform steps
-// of opensubdiv/<shape>.obj, written from single-precision floats.
+// OpenSubdiv's Hbr reference results (opensubdiv_baselines.h): written from
+// floats with 6 significant digits, the Loop shapes agree to 1e-6
 namespace {
-
-struct Opensubdiv_case
-{
-  std::string shape;
-  S::Border_corners corners;
-  int last_level; // the last baseline compared
-};
-
 void expect_opensubdiv_results(const Opensubdiv_case& c, std::string (*path)(const std::string&))
 {
-  Mesh mesh;
-  ASSERT_TRUE(testing_utils::read_obj_positions(path("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
-  for(int level = 0; level <= c.last_level; ++level) {
-    S::subdivide(mesh, S::Loop_mask<Mesh>(c.corners));
-    Mesh reference;
-    ASSERT_TRUE(testing_utils::read_obj_positions(
-      path("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
-    ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
-    ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
-    EXPECT_LT(position_mismatch(mesh, reference), 1e-6) << c.shape << " level " << level;
-  }
+  testing_utils::expect_opensubdiv_results<S::Loop_mask<Mesh>, Mesh>(c, path, 1e-6);
 }
-
 } // namespace
 
 // the bundled baselines: a closed shape and a shape with sharp border corners

@@ -42,8 +42,9 @@ namespace Subdiv {
  *     result is the same bit for bit with any number.
  *
  * \throws Bad_input when the mesh does not suit the scheme (empty, isolated or
- * non-manifold vertices, non-finite coordinates, a face of the wrong size) or
- * when the output would not fit in memory. The mesh is then unchanged.
+ * non-manifold vertices, non-finite coordinates, a face of the wrong size, a
+ * `Surface_mesh` that still holds removed elements: call `collect_garbage()`
+ * first) or when the output would not fit in memory. The mesh is then unchanged.
  */
 template <class PolygonMesh, class Mask, class NamedParameters = parameters::Default_named_parameters>
 void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = parameters::default_values())
@@ -61,22 +62,25 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
 
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
-  using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
-  const Data* data = choose_parameter<const Data*>(get_parameter(np, internal::carried_data_t()), nullptr);
-
   const internal::Parallel_loop loop = internal::parallel_loop(np);
 
-  internal::make_indices_dense(mesh);
   internal::reserve_levels<Host>(mesh, levels);
-  for(int level = 0; level < levels; ++level) {
-    if(data != nullptr && !data->empty()) { // the points from the recorded stencils, as the data
-      typename Data::Level carried(*data, mesh);
-      const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried.stencils()};
-      internal::refine_level(mesh, mask, points, internal::Parallel_loop(1), carried);
-    } else {
-      internal::refine_level(mesh, mask, internal::Mask_points<VPM>{vpm}, loop);
+  // The carried path (rows recorded per level) is compiled only where
+  // carried_data is passed: a plain program does not pay for it.
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
+    using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
+    const Data* data = get_parameter(np, internal::carried_data_t());
+    if(data != nullptr && !data->empty()) {
+      for(int level = 0; level < levels; ++level) { // the points from the recorded stencils, as the data
+        typename Data::Level carried(*data, mesh);
+        const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried.stencils()};
+        internal::refine_level(mesh, mask, points, internal::Parallel_loop(1), carried);
+      }
+      return;
     }
   }
+  for(int level = 0; level < levels; ++level)
+    internal::refine_level(mesh, mask, internal::Mask_points<VPM>{vpm}, loop);
 }
 
 } // namespace Subdiv

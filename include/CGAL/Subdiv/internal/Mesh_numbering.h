@@ -30,8 +30,9 @@ typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_of_edge(
  * iteration order: what the hosts number new vertices and faces by.
  * Halfedges are numbered by their edge: 2e for the halfedge that edge e's
  * iteration gives (`halfedge(e)`), 2e+1 for its opposite; so `h ^ 1` is the
- * opposite, `h >> 1` the edge, and `h & 1` tells the direction. Any FaceGraph goes through dynamic property maps; Surface_mesh (whose
- * garbage `subdivide()` collects first) uses its indices directly.
+ * opposite, `h >> 1` the edge, and `h & 1` tells the direction. Any
+ * FaceGraph goes through dynamic property maps; Surface_mesh (without
+ * garbage: `check_mesh` refuses it) uses its indices directly.
  */
 template <class Mesh>
 class Mesh_numbering

@@ -18,6 +18,22 @@ namespace CGAL {
 namespace Subdiv {
 namespace internal {
 
+// Surface_mesh keeps removed elements until collect_garbage(). The hosts
+// number elements densely, and collecting the garbage here would make every
+// program that refines a Surface_mesh compile CGAL's collect_garbage (about a
+// tenth of a plain program's compile time), so a mesh with garbage is refused.
+template <class Mesh>
+bool has_garbage(const Mesh&)
+{
+  return false;
+}
+
+template <class Point>
+bool has_garbage(const CGAL::Surface_mesh<Point>& mesh)
+{
+  return mesh.has_garbage();
+}
+
 /*
  * Everything a surface scheme needs of its input, checked before anything is
  * changed, so that a refused call leaves the caller's mesh as it was. Elements
@@ -115,12 +131,22 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
   return around_faces + border_halfedges == nh;
 }
 
+// the refusal of element `index` ("vertex 3 is isolated ..."), out of the
+// templates: each check below is one call
+[[noreturn]] inline void refuse_element(const std::string& scheme, const char* element, std::size_t index,
+                                        const std::string& what)
+{
+  throw Bad_input(scheme + ": " + element + " " + std::to_string(index) + " " + what);
+}
+
 template <class Mesh, class VertexPointMap>
 void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size)
 {
   if(passes_mesh_checks(mesh, vpm, required_face_size))
     return;
   require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
+  require(!has_garbage(mesh),
+          scheme + ": the mesh still holds removed elements (garbage); call collect_garbage() on it first");
   // A vertex is manifold when the halfedges around it (one fan) are all of its
   // incoming halfedges and at most one of them is a border halfedge (a
   // halfedge structure can chain two fans through their border halfedges).
@@ -139,18 +165,18 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
   std::size_t i = 0;
   for(auto v : vertices(mesh)) {
     if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())
-      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " is isolated (it belongs to no face)");
+      refuse_element(scheme, "vertex", i, "is isolated (it belongs to no face)");
     if(!is_finite_point(get(vpm, v)))
-      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+      refuse_element(scheme, "vertex", i, "has a non-finite coordinate");
     if(CGAL::halfedges_around_target(v, mesh).size() != get(incoming, v) || get(incoming_border, v) > 1)
-      throw Bad_input(scheme + ": vertex " + std::to_string(i) + " is non-manifold (its faces do not form one fan)");
+      refuse_element(scheme, "vertex", i, "is non-manifold (its faces do not form one fan)");
     ++i;
   }
   i = 0;
   for(auto f : faces(mesh)) {
     const std::size_t size = CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size();
     if(size < 3)
-      throw Bad_input(scheme + ": face " + std::to_string(i) + " has only " + std::to_string(size) + " vertices");
+      refuse_element(scheme, "face", i, "has only " + std::to_string(size) + " vertices");
     if(required_face_size != 0 && size != static_cast<std::size_t>(required_face_size))
       throw Bad_input(scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) +
                       " vertices; face " + std::to_string(i) + " has " + std::to_string(size));

@@ -6,7 +6,7 @@
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
-#include <algorithm>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -125,8 +125,15 @@ public:
 private:
   static std::vector<std::pair<int, FT>> sorted(const Stencil<int, FT>& stencil)
   {
-    std::vector<std::pair<int, FT>> terms(stencil.terms().begin(), stencil.terms().end());
-    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // a stable insertion sort: a mask has a handful of terms, and a plain loop
+    // costs every program that refines a border less to compile than std::stable_sort
+    std::vector<std::pair<int, FT>> terms;
+    for(const auto& term : stencil.terms()) {
+      auto at = terms.end();
+      while(at != terms.begin() && term.first < std::prev(at)->first)
+        --at;
+      terms.insert(at, term);
+    }
     return terms;
   }
 

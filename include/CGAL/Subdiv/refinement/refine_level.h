@@ -385,32 +385,6 @@ void refine_level(Mesh& mesh, const Mask& mask, const Points& points, const Para
   (sinks.write(level), ...);
 }
 
-// Surface_mesh keeps removed elements until collect_garbage(); the hosts
-// number elements densely, so garbage is collected first (the mesh is the
-// same mesh afterwards).
-template <class Mesh>
-void make_indices_dense(Mesh&)
-{}
-
-template <class Point>
-void make_indices_dense(CGAL::Surface_mesh<Point>& mesh)
-{
-  if(mesh.has_garbage())
-    mesh.collect_garbage();
-}
-
-template <class Mesh>
-bool has_garbage(const Mesh&)
-{
-  return false;
-}
-
-template <class Point>
-bool has_garbage(const CGAL::Surface_mesh<Point>& mesh)
-{
-  return mesh.has_garbage();
-}
-
 // Surface_mesh, several levels of a host that knows its counts: room for the
 // last level is made at once, so the arrays are not moved at every level
 // (an estimate above the truth costs address space only: untouched pages

@@ -302,7 +302,6 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
 
-  internal::require(!internal::has_garbage(mesh), "make_stencil_table: call collect_garbage() on the mesh first");
   const std::size_t sources = num_vertices(mesh);
   if(levels == 0 && refined_mesh == nullptr)
     return Stencil_table<FT>::identity(sources);
