@@ -194,25 +194,21 @@ enum class Diagonal {
   alternating // ascending where i + j is even: valences 4 and 8
 };
 
-/// the lattice (i, j), 0 <= i <= n, 0 <= j <= m: vertex (i, j) is number
-/// j (n + 1) + i, with the point point(i, j); quads, or triangles cut along `diagonal`
-template <class Mesh>
-Mesh grid(int n, int m, const std::function<Point_of<Mesh>(int, int)>& point, bool triangles,
-          Diagonal diagonal = Diagonal::ascending)
+/// the faces of the n x m cells of a lattice whose vertex (i, j) is number
+/// id(i, j) (an id may wrap around, for a torus): the quad (i, j), (i+1, j),
+/// (i+1, j+1), (i, j+1), or its two triangles, cut from (i, j) to (i+1, j+1)
+/// where ascending(i, j), else from (i+1, j) to (i, j+1); cells by increasing
+/// j, then i
+inline std::vector<std::vector<int>> lattice_faces(int n, int m, const std::function<int(int, int)>& id, bool triangles,
+                                                   const std::function<bool(int, int)>& ascending)
 {
-  std::vector<Point_of<Mesh>> points;
-  for(int j = 0; j <= m; ++j)
-    for(int i = 0; i <= n; ++i)
-      points.push_back(point(i, j));
   std::vector<std::vector<int>> faces;
-  const auto id = [&](int i, int j) { return j * (n + 1) + i; };
   for(int j = 0; j < m; ++j)
     for(int i = 0; i < n; ++i) {
       const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      const bool ascending = diagonal == Diagonal::ascending || (diagonal == Diagonal::alternating && (i + j) % 2 == 0);
       if(!triangles)
         faces.push_back({a, b, c, d});
-      else if(ascending) {
+      else if(ascending(i, j)) {
         faces.push_back({a, b, c});
         faces.push_back({a, c, d});
       } else {
@@ -220,7 +216,32 @@ Mesh grid(int n, int m, const std::function<Point_of<Mesh>(int, int)>& point, bo
         faces.push_back({b, c, d});
       }
     }
-  return mesh_of<Mesh>(points, faces);
+  return faces;
+}
+
+/// the lattice (i, j), 0 <= i <= n, 0 <= j <= m: vertex (i, j) is number
+/// j (n + 1) + i, with the point point(i, j); quads, or triangles cut where
+/// ascending(i, j) from (i, j) to (i+1, j+1) (lattice_faces)
+template <class Mesh>
+Mesh grid(int n, int m, const std::function<Point_of<Mesh>(int, int)>& point, bool triangles,
+          const std::function<bool(int, int)>& ascending)
+{
+  std::vector<Point_of<Mesh>> points;
+  for(int j = 0; j <= m; ++j)
+    for(int i = 0; i <= n; ++i)
+      points.push_back(point(i, j));
+  const auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  return mesh_of<Mesh>(points, lattice_faces(n, m, id, triangles, ascending));
+}
+
+/// the same with the diagonals of `diagonal`
+template <class Mesh>
+Mesh grid(int n, int m, const std::function<Point_of<Mesh>(int, int)>& point, bool triangles,
+          Diagonal diagonal = Diagonal::ascending)
+{
+  return grid<Mesh>(n, m, point, triangles, [diagonal](int i, int j) {
+    return diagonal == Diagonal::ascending || (diagonal == Diagonal::alternating && (i + j) % 2 == 0);
+  });
 }
 
 /// vertex (i, j) of a grid(n, m, ...)

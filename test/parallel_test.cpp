@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_builders.h"
 #include "threads_test_utils.h"
 
 #include <boost/property_map/property_map.hpp>
@@ -36,29 +37,17 @@ Mesh torus(int nu, int nv, bool triangles, int hole = 0)
   std::mt19937 random(11);
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   const double pi = 3.14159265358979323846;
-  Mesh mesh;
-  std::vector<V> v(static_cast<std::size_t>(nu * nv));
-  for(int i = 0; i < nu; ++i)
-    for(int j = 0; j < nv; ++j) {
+  std::vector<Point> points;
+  for(int j = 0; j < nv; ++j)
+    for(int i = 0; i < nu; ++i) {
       const double u = 2 * pi * (i + jitter(random)) / nu, w = 2 * pi * (j + jitter(random)) / nv;
-      v[static_cast<std::size_t>(i * nv + j)] = mesh.add_vertex(
-        Point((1 + 0.4 * std::cos(w)) * std::cos(u), (1 + 0.4 * std::cos(w)) * std::sin(u), 0.4 * std::sin(w)));
+      points.emplace_back((1 + 0.4 * std::cos(w)) * std::cos(u), (1 + 0.4 * std::cos(w)) * std::sin(u),
+                          0.4 * std::sin(w));
     }
-  const auto at = [&](int i, int j) { return v[static_cast<std::size_t>((i % nu) * nv + (j % nv))]; };
+  const auto id = [nu, nv](int i, int j) { return (j % nv) * nu + (i % nu); };
   std::bernoulli_distribution coin(0.5);
-  for(int i = 0; i < nu; ++i)
-    for(int j = 0; j < nv; ++j) {
-      const V a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      if(!triangles) {
-        mesh.add_face(a, b, c, d);
-      } else if(coin(random)) {
-        mesh.add_face(a, b, c);
-        mesh.add_face(a, c, d);
-      } else {
-        mesh.add_face(a, b, d);
-        mesh.add_face(b, c, d);
-      }
-    }
+  Mesh mesh = testing_utils::mesh_of<Mesh>(
+    points, testing_utils::lattice_faces(nu, nv, id, triangles, [&](int, int) { return coin(random); }));
   if(triangles) {
     std::bernoulli_distribution flip(0.3);
     std::vector<Mesh::Edge_index> edges(mesh.edges().begin(), mesh.edges().end());

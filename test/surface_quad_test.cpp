@@ -16,6 +16,7 @@
 
 #include "mesh_builders.h"
 #include "mesh_test_utils.h"
+#include "opensubdiv_baselines.h"
 
 #include <map>
 #include <set>
@@ -32,6 +33,7 @@ using PX = KX::Point_3;
 using Exact_mesh = CGAL::Surface_mesh<PX>;
 using VX = Exact_mesh::Vertex_index;
 
+using testing_utils::Opensubdiv_case;
 using testing_utils::position_mismatch;
 using testing_utils::shared_mesh;
 using testing_utils::test_mesh;
@@ -173,33 +175,15 @@ TEST(QuadSchemes, larger_shared_meshes_agree_with_cgal_subdivision_method_3)
 }
 
 // ---------------------------------------------------------------------------
-// Agreement with OpenSubdiv: <shape>_levelN.obj holds N+1 uniform steps of
-// opensubdiv/<shape>.obj (checked here by the counts), written from floats.
+// Agreement with OpenSubdiv's Hbr reference results (opensubdiv_baselines.h).
 
 namespace {
 
-struct Opensubdiv_case
-{
-  std::string shape;
-  S::Border_corners corners;
-  int last_level; // the last baseline compared
-};
-
+// the baselines print 6 significant digits: catmark_flap is 0.3 across at 1.9
+// from the origin, so its last digit is 1.7e-5 of its size
 void expect_opensubdiv_results(const Opensubdiv_case& c, std::string (*path)(const std::string&))
 {
-  Mesh mesh;
-  ASSERT_TRUE(testing_utils::read_mesh(path("opensubdiv/" + c.shape + ".obj"), mesh)) << c.shape;
-  for(int level = 0; level <= c.last_level; ++level) {
-    S::subdivide(mesh, S::Catmull_clark_mask<Mesh>(c.corners));
-    Mesh reference;
-    ASSERT_TRUE(testing_utils::read_mesh(
-      path("opensubdiv_hbr_baseline/" + c.shape + "_level" + std::to_string(level) + ".obj"), reference));
-    ASSERT_EQ(num_vertices(mesh), num_vertices(reference)) << c.shape << " level " << level;
-    ASSERT_EQ(num_faces(mesh), num_faces(reference)) << c.shape << " level " << level;
-    // the baselines print 6 significant digits: catmark_flap is 0.3 across
-    // at 1.9 from the origin, so its last digit is 1.7e-5 of its size
-    EXPECT_LT(position_mismatch(mesh, reference), 2e-5) << c.shape << " level " << level;
-  }
+  testing_utils::expect_opensubdiv_results<S::Catmull_clark_mask<Mesh>, Mesh>(c, path, 2e-5);
 }
 
 // catmark_cube and catmark_pyramid are closed; catmark_tent uses "edges
