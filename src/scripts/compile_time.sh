@@ -4,7 +4,8 @@
 #
 #   bash src/scripts/compile_time.sh [--write-doc] [runs]     (default 5 runs)
 #
-# Compiles every probe of src/bench/compile_time/ `runs` times, one at a time,
+# Compiles src/bench/compile_time/probe.cpp as every probe below `runs` times,
+# one at a time,
 # with g++ -std=c++17 -O2 as a user would, and prints the least CPU time
 # (user + sys) of each, the time above the read-and-write program all probes
 # share, and the ratio to Subdivision_method_3. The least of several runs is
@@ -21,6 +22,15 @@ runs=${1:-5}
 [[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "compile_time.sh: runs must be a positive integer, got '$runs'" >&2; exit 2; }
 cxx=${CXX:-g++}
 probes=(read_write sm3_catmull_clark subdiv_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_loop)
+# the preprocessor flags of each probe (probe.cpp says what they select)
+declare -A flags=(
+  [read_write]=""
+  [sm3_catmull_clark]="-DPROBE_SM3"
+  [subdiv_catmull_clark]="-DPROBE_SUBDIV"
+  [subdiv_narrow_catmull_clark]="-DPROBE_SUBDIV_NARROW"
+  [sm3_loop]="-DPROBE_SM3 -DPROBE_LOOP"
+  [subdiv_loop]="-DPROBE_SUBDIV -DPROBE_LOOP"
+)
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -29,7 +39,7 @@ declare -A best
 for ((r = 0; r < runs; ++r)); do
   for p in "${probes[@]}"; do
     /usr/bin/time -f "%U %S" -o "$out/time" "$cxx" -std=c++17 -O2 -I "$root/include" -I /usr/include/eigen3 \
-      -c "$root/src/bench/compile_time/$p.cpp" -o "$out/$p.o"
+      ${flags[$p]} -c "$root/src/bench/compile_time/probe.cpp" -o "$out/$p.o"
     t=$(awk '{printf "%.2f", $1 + $2}' "$out/time")
     if [[ -z ${best[$p]:-} ]] || awk -v a="$t" -v b="${best[$p]}" 'BEGIN{exit !(a < b)}'; then
       best[$p]=$t
@@ -62,7 +72,7 @@ if ((write_doc)); then
     echo "# Compile time"
     echo
     echo "Written by \`src/scripts/compile_time.sh --write-doc $runs\`; do not edit by hand. Each program"
-    echo "of \`src/bench/compile_time/\` reads a mesh, refines it 3 levels and writes it, compiled"
+    echo "(\`src/bench/compile_time/probe.cpp\`, one per library and scheme) reads a mesh, refines it 3 levels and writes it, compiled"
     echo "with \`g++ -std=c++17 -O2\` as a user would; the time is CPU (user + sys), the least"
     echo "of $runs compiles, one at a time. \`read_write\` is the part every program shares."
     echo "\`subdiv_*\` include \`<CGAL/Subdiv.h>\`, \`subdiv_narrow_*\` only"
