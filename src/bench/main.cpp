@@ -777,6 +777,8 @@ int profile(int argc, char** argv, int at, const Options& options)
       job = refinement(static_cast<Peer>(p), in, scheme, levels);
   if(peer == "ours-stencils")
     job = ours_stencil_build(in, scheme, levels, 1);
+  else if(peer == "ours-stencils-2T")
+    job = ours_stencil_build(in, scheme, levels, 2);
   else if(peer == "ours-apply")
     job = ours_apply(in, scheme, levels);
   else if(peer == "OSD-apply")

@@ -155,15 +155,22 @@ public:
 #ifdef CGAL_LINKED_WITH_TBB
     const int index = tbb::this_task_arena::current_thread_index();
     if(index >= 0 && static_cast<std::size_t>(index) < m_values.size())
-      return m_values[static_cast<std::size_t>(index)];
+      return m_values[static_cast<std::size_t>(index)].value;
     return m_others.local();
 #else
-    return m_values[0];
+    return m_values[0].value;
 #endif
   }
 
 private:
-  std::vector<T> m_values;
+  // each thread's value on cache lines of its own: scratch members written
+  // for every term (sizes, vector ends) would otherwise bounce between the
+  // cores (false sharing); 128 bytes, as the adjacent-line prefetch pairs lines
+  struct alignas(128) Slot
+  {
+    T value;
+  };
+  std::vector<Slot> m_values;
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<T> m_others; // threads beyond the default concurrency
 #endif

@@ -59,36 +59,38 @@ public:
   }
 
   /// adds w to the weight of source s
-  void add(Index s, const FT& w)
-  {
-    Entry& e = m_entries[s];
-    if(e.stamp != m_generation) {
-      e.stamp = m_generation;
-      m_order[m_size++] = s;
-      e.sum = w;
-    } else {
-      e.sum += w;
-    }
-  }
+  void add(Index s, const FT& w) { add_to(m_entries.data(), m_order, m_generation, m_size, s, w); }
 
   /// adds w times a row, given as terms [begin, end) of parallel arrays
   /// `sources` and `weights`
   void add_row(const Index* sources, const FT* weights, std::size_t begin, std::size_t end, const FT& w)
   {
+    // the members in locals: the stores of stamps and sources (32-bit) would
+    // otherwise make the compiler reload the generation after each of them
+    Entry* const entries = m_entries.data();
+    Index* const order = m_order;
+    const std::uint32_t generation = m_generation;
+    std::size_t size = m_size;
     for(std::size_t t = begin; t < end; ++t)
-      add(sources[t], w * weights[t]);
+      add_to(entries, order, generation, size, sources[t], w * weights[t]);
+    m_size = size;
   }
 
   /// the same for the first row of a sum, whose sources all are new (a row
   /// lists each source once): no stamp is read
   void add_first_row(const Index* sources, const FT* weights, std::size_t begin, std::size_t end, const FT& w)
   {
+    Entry* const entries = m_entries.data();
+    Index* const order = m_order;
+    const std::uint32_t generation = m_generation;
+    std::size_t size = m_size;
     for(std::size_t t = begin; t < end; ++t) {
-      Entry& e = m_entries[sources[t]];
-      e.stamp = m_generation;
-      m_order[m_size++] = sources[t];
-      e.sum = w * weights[t];
+      const Index s = sources[t];
+      entries[s].stamp = generation;
+      order[size++] = s;
+      entries[s].sum = w * weights[t];
     }
+    m_size = size;
   }
 
   /// adds w times a row given as a range of (source, weight), the sources
@@ -119,6 +121,19 @@ private:
     FT sum;
     std::uint32_t stamp;
   };
+  // the one accumulation step: a new source is stamped and listed, a listed one summed
+  static void add_to(Entry* entries, Index* order, std::uint32_t generation, std::size_t& size, Index s, const FT& w)
+  {
+    Entry& e = entries[s];
+    if(e.stamp != generation) {
+      e.stamp = generation;
+      order[size++] = s;
+      e.sum = w;
+    } else {
+      e.sum += w;
+    }
+  }
+
   std::vector<Entry> m_entries;
   std::vector<Index> m_room;
   Index* m_order = nullptr;
