@@ -25,30 +25,12 @@ std::vector<std::pair<int, Exact>> terms_of(const S::Stencil<int, Exact>& stenci
   return terms;
 }
 
-// the keyword of `cgal-subdiv curve --scheme` (scheme_keyword() lives with the refinement code)
-std::string keyword(Scheme_kind kind)
-{
-  switch(kind) {
-    case Scheme_kind::bezier:
-      return "bezier";
-    case Scheme_kind::bspline:
-      return "bspline";
-    case Scheme_kind::chaikin:
-      return "chaikin";
-    case Scheme_kind::corner_cutting:
-      return "corner-cutting";
-    case Scheme_kind::four_point:
-      return "four-point";
-  }
-  return "";
-}
-
 } // namespace
 
 Curve_summary analyse_curve(const Scheme_spec& spec)
 {
   Curve_summary s;
-  s.scheme = keyword(spec.kind);
+  s.scheme = scheme_keyword(spec.kind);
   with_scheme<Exact>(spec, [&](const auto& scheme) {
     using Scheme = std::decay_t<decltype(scheme)>;
     S::Curve_analysis<Exact> a;

@@ -5,6 +5,8 @@
 #ifndef CGAL_SUBDIV_CLI_COMMON_H
 #define CGAL_SUBDIV_CLI_COMMON_H
 
+#include "errors.h"
+
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv/curves/refine_polyline.h>
@@ -19,20 +21,6 @@ namespace cgal_subdiv {
 using Exact = CGAL::Exact_rational;
 using Exact_kernel = CGAL::Simple_cartesian<Exact>;
 using Double_kernel = CGAL::Simple_cartesian<double>;
-
-/// A mistake on the command line itself (exit code 2).
-class Usage_error : public std::runtime_error
-{
-public:
-  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
-};
-
-/// A file or its content cannot be used (exit code 1).
-class Input_error : public std::runtime_error
-{
-public:
-  explicit Input_error(const std::string& what) : std::runtime_error(what) {}
-};
 
 /// The points of an input file, every coordinate exact.
 struct Input_polyline
@@ -72,7 +60,24 @@ struct Curve_job
   bool exact = false;
 };
 
-std::string scheme_keyword(Scheme_kind kind);
+/// the keyword of `cgal-subdiv curve --scheme KIND`: "bezier", "corner-cutting", ...
+/// (inline: the analyses, compiled apart from the refinement code, use it too)
+inline std::string scheme_keyword(Scheme_kind kind)
+{
+  switch(kind) {
+    case Scheme_kind::bezier:
+      return "bezier";
+    case Scheme_kind::bspline:
+      return "bspline";
+    case Scheme_kind::chaikin:
+      return "chaikin";
+    case Scheme_kind::corner_cutting:
+      return "corner-cutting";
+    case Scheme_kind::four_point:
+      return "four-point";
+  }
+  return "?";
+}
 /// e.g. "B-spline of degree 3", "corner cutting a=1/10 b=3/5", "four-point w=1/16"
 std::string describe(const Scheme_spec& scheme);
 /// e.g. "closed", "open, shrinking ends", "open, kept ends"

@@ -5,23 +5,6 @@
 
 namespace cgal_subdiv {
 
-std::string scheme_keyword(Scheme_kind kind)
-{
-  switch(kind) {
-    case Scheme_kind::bezier:
-      return "bezier";
-    case Scheme_kind::bspline:
-      return "bspline";
-    case Scheme_kind::chaikin:
-      return "chaikin";
-    case Scheme_kind::corner_cutting:
-      return "corner-cutting";
-    case Scheme_kind::four_point:
-      return "four-point";
-  }
-  return "?";
-}
-
 std::string describe(const Scheme_spec& scheme)
 {
   switch(scheme.kind) {
