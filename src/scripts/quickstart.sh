@@ -9,12 +9,14 @@
 # Options (after the mode):
 #   --with-peers      also install the optional peers (OpenMesh, OpenSubdiv)
 #   --jobs N          parallel build and test jobs (default: nproc; or set JOBS=N)
-#   --no-sanitizers   test mode: skip the sanitizer job (build-asan/)
+#   --no-sanitizers   test mode: skip the sanitizer job (build-asan/) and the
+#                     fuzz job (build-fuzz/)
 #
 # The build is an optimised one that keeps CGAL's preconditions and assertions
 # (Release with -O2, no NDEBUG) in build/ at the root of the checkout. Running it
 # again only redoes what changed. In test mode the exit code is ctest's; before
-# the tests, a subset of them runs under ASan + UBSan in build-asan/ (doc/ci.md).
+# the tests, a subset of them runs under ASan + UBSan in build-asan/, and the
+# fuzzers of src/fuzz/ run for a fixed time each (doc/ci.md).
 set -euo pipefail
 
 # libtbb-dev: optional for users of the library, installed here so that the
@@ -37,6 +39,12 @@ readonly WARNINGS_AS_ERRORS_IN_TEST=ON
 readonly SANITIZER_TARGETS=(cgal-subdiv parallel_test stencil_table_test)
 readonly SANITIZER_LABELS=(cli parallel_test stencil_table_test)
 readonly PEER_PACKAGES=(libopenmesh-dev libosd-dev)
+# The fuzz job of test mode (with the sanitizer job): every libFuzzer target of
+# src/fuzz/ built with clang and run for FUZZ_SECONDS each
+# (src/scripts/fuzz.sh, doc/ci.md); clang's libFuzzer runtime is only a
+# recommendation of clang, so it is named
+readonly FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+readonly FUZZ_SECONDS=30
 
 say() { printf '==> %s\n' "$*"; }
 die() { printf 'quickstart: error: %s\n' "$*" >&2; exit 2; }
@@ -88,6 +96,9 @@ is_installed() {
 install_missing() {
   local packages=("${REQUIRED_PACKAGES[@]}")
   ((with_peers)) && packages+=("${PEER_PACKAGES[@]}")
+  if [[ $mode == test ]] && ((sanitizers)); then
+    packages+=("${FUZZ_PACKAGES[@]}")
+  fi
   if ! command -v dpkg-query >/dev/null 2>&1; then
     say "not a Debian system: skipping package installation; make sure these (or their"
     say "equivalents) are installed: ${packages[*]}"
@@ -152,6 +163,16 @@ sanitizer_job() {
   ) || die "the tests under ASan + UBSan failed (above; build-asan/); the main tests were not run"
 }
 
+# The fuzz job (test mode, with the sanitizer job): src/scripts/fuzz.sh builds
+# every target of src/fuzz/ with clang, ASan and UBSan, seeds it from
+# ../shared/data/meshes and test/cli/, and runs it for FUZZ_SECONDS; a crash
+# fails the run (the input is kept in build-fuzz/TARGET/crashes/).
+fuzz_job() {
+  say "fuzzing every target of src/fuzz/ for $FUZZ_SECONDS s each (src/scripts/fuzz.sh)"
+  bash "$root/src/scripts/fuzz.sh" --seconds "$FUZZ_SECONDS" --build "$root/build-fuzz" ||
+    die "the fuzz job failed (above; build-fuzz/); the main tests were not run"
+}
+
 install_missing
 [[ $mode == deps ]] && exit 0
 configure
@@ -174,8 +195,9 @@ say "building everything with $jobs jobs"
 cmake --build "$build" -j "$jobs" 2>&1 | tee "$build/build.log" || die "the build failed (see above)"
 if ((sanitizers)); then
   sanitizer_job
+  fuzz_job
 else
-  say "sanitizer job skipped (--no-sanitizers)"
+  say "sanitizer and fuzz jobs skipped (--no-sanitizers)"
 fi
 say "running the tests (ctest -j $jobs)"
 # ctest's summary stays the last thing printed, and its exit code is ours
