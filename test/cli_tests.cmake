@@ -215,20 +215,21 @@ function(subdiv_surface_error name rc regex)
   subdiv_cli_test(${name} RC ${rc} STDERR_REGEX "^cgal-subdiv: error: .*${regex}" STDERR_LINES 1
                   OUTPUT @WORK@/out.off ${ARGN})
 endfunction()
-subdiv_surface_error(surface_missing_file 1 "cannot read '[^']*missing.off': No such file"
+subdiv_surface_error(surface_missing_file 1 "cannot read '[^']*missing.off': no such file"
   ARGS surface missing.off ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_unknown_input_extension 2 "INPUT '[^']*square.txt': unknown format '.txt' \\(expected .off, .obj, .ply or .stl\\)"
   ARGS surface ${square} ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_unknown_output_extension 2 "OUTPUT '[^']*out.vtk': unknown format '.vtk'"
   ARGS surface ${tetra} -o @WORK@/out.vtk --scheme loop --levels 1)
-subdiv_surface_error(surface_garbage 1 "cannot read '[^']*garbage.off' as OFF"
+# the counts promise more than the 17 bytes after them can hold: refused before reading on
+subdiv_surface_error(surface_garbage 1 "'[^']*garbage.off' line 2: header says 4 vertices, but the file has only 17 bytes after the header"
   ARGS surface ${SUBDIV_CLI_DIR}/garbage.off ${mesh_out} --scheme loop --levels 1)
-subdiv_surface_error(surface_not_obj 1 "cannot read '[^']*not_a_mesh.obj' as OBJ"
+subdiv_surface_error(surface_not_obj 1 "'[^']*not_a_mesh.obj' holds no faces"
   ARGS surface ${SUBDIV_CLI_DIR}/not_a_mesh.obj ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_non_manifold_edge 1
-  "'[^']*three_faces_on_an_edge.off' is not a manifold polygon mesh: the edge from \\(0 0 0\\) to \\(1 0 0\\) belongs to 3 faces \\(--repair"
+  "'[^']*three_faces_on_an_edge.off' is not a manifold polygon mesh: the edge from vertex 0 \\(0 0 0\\) to vertex 1 \\(1 0 0\\) belongs to 3 faces \\(--repair"
   ARGS surface ${SUBDIV_CLI_DIR}/three_faces_on_an_edge.off ${mesh_out} --scheme loop --levels 1)
-subdiv_surface_error(surface_non_manifold_vertex 1 "vertex 0 is non-manifold"
+subdiv_surface_error(surface_non_manifold_vertex 1 "vertex 0 \\(0 0 0\\) is non-manifold \\(its faces form 2 separate fans\\)"
   ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_quads_for_loop 1 "Loop.* needs a mesh whose faces all have 3 vertices; face 0 has 4"
   ARGS surface ${cube} ${mesh_out} --scheme loop --levels 1)
@@ -239,8 +240,62 @@ foreach(scheme butterfly sqrt3)
 endforeach()
 subdiv_surface_error(surface_negative_levels 1 "the number of levels must not be negative, got -1"
   ARGS surface ${tetra} ${mesh_out} --scheme loop --levels -1)
-subdiv_surface_error(surface_huge_levels 1 "40 iterations on 4 faces would make more faces than fit in this machine's memory"
+subdiv_surface_error(surface_huge_levels 1
+  "loop: 40 levels on 4 faces would make about 10\\^24 faces, about 10\\^26 bytes at 90 bytes per face, more than the memory limit of [0-9.]+ GB \\(this machine's memory\\); --max-memory raises it"
   ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 40 TIMEOUT 10)
+# the estimate takes constant time, whatever the level count
+subdiv_surface_error(surface_billion_levels 1 "loop: 999999999 levels on 4 faces would make about 10\\^602059991 faces"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 999999999 TIMEOUT 5)
+# --max-memory: 12 levels of Loop on the tetrahedron make 67108864 faces, 6.0 GB at 90 B a face
+subdiv_surface_error(surface_max_memory 1
+  "loop: 12 levels on 4 faces would make 67108864 faces, about 6.0 GB at 90 bytes per face, more than the memory limit of 1 MB; --max-memory raises it"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 12 --max-memory 1M)
+subdiv_cli_test(surface_max_memory_raised ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 3 --max-memory 2GiB
+  OUTPUT @WORK@/out.off FACES 256)
+subdiv_surface_error(surface_max_memory_not_a_size 2 "--max-memory expects a size such as 8G, 512MB or 2GiB, got '1X'"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --max-memory 1X)
+subdiv_surface_error(surface_max_memory_zero 2 "--max-memory must be a positive size, got '0'"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --max-memory 0)
+# --- hostile files (test/cli/hostile/): the checked reader refuses them with
+# the file, the line or byte and the problem, before CGAL sees anything; each
+# of these crashed or exhausted memory inside CGAL's readers before
+set(hostile ${SUBDIV_CLI_DIR}/hostile)
+foreach(case
+    "binary_header_ascii_body.off|byte 23: header says 857747744 vertices, but the file has only 20 bytes after the header"
+    "huge_coordinate.off|line 4: vertex 1 has the coordinate 1e400, which is not a finite number"
+    "huge_list.ply|line 13: face 0 says it has 2147483647 vertices, but only 7 bytes are left"
+    "index_far_out.ply|line 13: face 0 has vertex index 1000000, but the file has 3 vertices \\(0 to 2\\)"
+    "negative_index.ply|line 13: face 0 has vertex index -1, but the file has 3 vertices \\(0 to 2\\)"
+    "property_before_element.ply|line 3: a property line before any element line"
+    "index_past_end.obj|line 4: face 0 has vertex index 4, but the file has 3 vertices \\(1 to 3\\)"
+    "index_zero.obj|line 4: face 0 has vertex index 0 \\(OBJ counts vertices from 1, or from -1 backwards\\)"
+    "relative_index_out.obj|line 4: face 0 has vertex index -4, but only 3 vertices precede it \\(-1 to -3\\)")
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 file)
+  list(GET parts 1 regex)
+  string(REGEX REPLACE "\\.[a-z]+$" "" stem ${file})
+  subdiv_surface_error(surface_hostile_${stem} 1 "'[^']*${file}' ${regex}"
+    ARGS surface ${hostile}/${file} ${mesh_out} --scheme loop --levels 1 TIMEOUT 10)
+endforeach()
+# --repair sees only the checked soup too (a negative PLY index aborted it, an
+# OBJ index past the end failed a Boost assertion)
+subdiv_surface_error(surface_hostile_repair_negative_index 1 "'[^']*negative_index.ply' line 13: face 0 has vertex index -1"
+  ARGS surface ${hostile}/negative_index.ply ${mesh_out} --scheme loop --levels 1 --repair)
+subdiv_surface_error(surface_hostile_repair_index_past_end 1 "'[^']*index_past_end.obj' line 4: face 0 has vertex index 4"
+  ARGS surface ${hostile}/index_past_end.obj ${mesh_out} --scheme loop --levels 1 --repair)
+# valid variants that crashed CGAL's reader: read, what is ignored is noted
+subdiv_cli_test(surface_stoff ARGS surface ${hostile}/stoff.off ${mesh_out} --scheme loop --levels 1
+  OUTPUT @WORK@/out.off FACES 4 STDERR_REGEX "^cgal-subdiv: note: ignored the vertex texture coordinates of '[^']*stoff.off'\n$")
+subdiv_cli_test(surface_coff_short_colour ARGS surface ${hostile}/coff_short_colour.off ${mesh_out} --scheme loop --levels 1
+  OUTPUT @WORK@/out.off FACES 4 STDERR_REGEX "^cgal-subdiv: note: ignored the vertex colours of '[^']*coff_short_colour.off'\n$")
+# unreferenced vertices are dropped, with a note (OpenSubdiv accepts them)
+subdiv_cli_test(surface_unreferenced_vertices ARGS surface ${hostile}/unreferenced.off ${mesh_out} --scheme loop --levels 1
+  OUTPUT @WORK@/out.off VERTICES 6 FACES 4
+  STDERR_REGEX "note: dropped the 2 vertices of '[^']*unreferenced.off' that no face uses \\(of 5\\)")
+subdiv_cli_test(surface_obj_uv_and_tags ARGS surface ${hostile}/uv_and_tags.obj ${mesh_out} --scheme loop --levels 1
+  OUTPUT @WORK@/out.off FACES 4
+  STDERR_REGEX "note: ignored 3 texture coordinates \\(vt\\) of .*note: ignored 1 tag line \\(t\\) of '[^']*uv_and_tags.obj': creases, corners and holes are not supported yet")
+
 subdiv_surface_error(surface_unknown_scheme 2 "unknown scheme 'chaikin' \\(expected loop, "
   ARGS surface ${tetra} ${mesh_out} --scheme chaikin --levels 1)
 subdiv_surface_error(surface_missing_levels 2 "missing --levels" ARGS surface ${tetra} ${mesh_out} --scheme loop)

@@ -158,6 +158,51 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   EXPECT_EQ(num_faces(big), 20u);
 }
 
+// max_memory: the output estimate (faces times the host's measured peak
+// bytes per face) is compared with it before any work, in constant time
+TEST(Loop, max_memory_refuses_before_any_work)
+{
+  Mesh mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/icosahedron.off"), mesh));
+  const double per_face = S::Host_of<S::Loop_mask<Mesh>>::peak_bytes_per_face();
+  EXPECT_EQ(per_face, 90);
+  // 3 levels: 20 x 4^3 = 1280 faces, 115200 bytes
+  std::string said = "no exception";
+  try {
+    S::loop_subdivision(mesh, S::parameters::number_of_iterations(3).max_memory(100000));
+  } catch(const S::Bad_input& e) {
+    said = e.what();
+  }
+  EXPECT_NE(said.find(": 3 levels on 20 faces would make 1280 faces, about 115 kB at 90 bytes per face, more than the "
+                      "memory limit of 100 kB; the named parameter max_memory raises it"),
+            std::string::npos)
+    << said;
+  EXPECT_EQ(num_faces(mesh), 20u);
+  S::loop_subdivision(mesh, S::parameters::number_of_iterations(3).max_memory(115200));
+  EXPECT_EQ(num_faces(mesh), 1280u);
+
+  // a billion levels are refused at once, with the size as a power of ten
+  Mesh again;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/icosahedron.off"), again));
+  try {
+    S::loop_subdivision(again, S::parameters::number_of_iterations(1000000000));
+    said = "no exception";
+  } catch(const S::Bad_input& e) {
+    said = e.what();
+  }
+  EXPECT_NE(said.find(": 1000000000 levels on 20 faces would make about 10^602059992 faces"), std::string::npos)
+    << said;
+
+  // the stencil tables read it too
+  try {
+    S::make_stencil_table(again, S::Loop_mask<Mesh>(), S::parameters::number_of_iterations(3).max_memory(100000));
+    said = "no exception";
+  } catch(const S::Bad_input& e) {
+    said = e.what();
+  }
+  EXPECT_NE(said.find("would make 1280 faces"), std::string::npos) << said;
+}
+
 // OpenSubdiv's Hbr reference results (opensubdiv_baselines.h): written from
 // floats with 6 significant digits, the Loop shapes agree to 1e-6
 namespace {

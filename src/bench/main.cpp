@@ -845,7 +845,8 @@ int main(int argc, char** argv)
         "(warm, the default: reused; fresh: a new mmap each time, so every run pays its page faults; given\n"
         "before --profile, it applies there too). --meshes: the shared mesh directory (default %s).\n"
         "--profile: only run one job REPEATS times (default 10), for perf; PEER: ours, CGAL, OpenMesh, OSD,\n"
-        "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the floor); SCHEME: Loop, "
+        "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the "
+        "floor); SCHEME: Loop, "
         "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
         "quad200k, mixed, border, fandisk, mushroom, spot.\n",
         SUBDIV_BENCH_MESH_DIR);

@@ -4,6 +4,10 @@
 #include "numbers.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
+
+#include <cctype>
 #include <stdexcept>
 
 namespace cgal_subdiv {
@@ -56,6 +60,50 @@ int Parsed_args::integer(const std::string& key, int fallback) const
     throw Usage_error(key + " expects a whole number, got '" + value(key) + "'" +
                       (reason == "not a whole number" ? "" : " (" + reason + ")"));
   }
+}
+
+double Parsed_args::bytes(const std::string& key, double fallback) const
+{
+  if(!has(key))
+    return fallback;
+  const std::string text = value(key);
+  const auto refuse = [&]() -> double {
+    throw Usage_error(key + " expects a size such as 8G, 512MB or 2GiB, got '" + text + "'");
+  };
+  std::size_t digits = 0;
+  while(digits < text.size() && (std::isdigit(static_cast<unsigned char>(text[digits])) || text[digits] == '.'))
+    ++digits;
+  if(digits == 0)
+    return refuse();
+  char* end = nullptr;
+  const std::string number = text.substr(0, digits);
+  const double amount = std::strtod(number.c_str(), &end);
+  if(end != number.c_str() + number.size())
+    return refuse();
+  std::string unit = text.substr(digits);
+  for(char& c : unit)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::map<std::string, double> units = {{"", 1},
+                                               {"b", 1},
+                                               {"k", 1e3},
+                                               {"kb", 1e3},
+                                               {"m", 1e6},
+                                               {"mb", 1e6},
+                                               {"g", 1e9},
+                                               {"gb", 1e9},
+                                               {"t", 1e12},
+                                               {"tb", 1e12},
+                                               {"kib", 1024.0},
+                                               {"mib", 1048576.0},
+                                               {"gib", 1073741824.0},
+                                               {"tib", 1099511627776.0}};
+  const auto found = units.find(unit);
+  if(found == units.end())
+    return refuse();
+  const double result = amount * found->second;
+  if(!(result >= 1) || !std::isfinite(result))
+    throw Usage_error(key + " must be a positive size, got '" + text + "'");
+  return result;
 }
 
 Parsed_args scan_args(const std::vector<std::string>& args, const std::vector<Option_spec>& specs,

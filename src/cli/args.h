@@ -30,6 +30,10 @@ public:
   Exact number(const std::string& key, const Exact& fallback) const;
   /// parses the value with parse_int(); Usage_error if it is not a whole number
   int integer(const std::string& key, int fallback) const;
+  /// a size in bytes: a number with an optional unit, k/M/G/T (powers of
+  /// 1000) or KiB/MiB/GiB/TiB (powers of 1024), a final B optional, e.g. 8G,
+  /// 512MB, 1.5GiB; Usage_error if it is not a positive size
+  double bytes(const std::string& key, double fallback) const;
 
   std::vector<std::string> positional;
 

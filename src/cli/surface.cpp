@@ -2,23 +2,23 @@
 // Copyright (c) 2026 CGAL Subdiv contributors
 #include "surface.h"
 #include "files.h"
+#include "mesh_soup.h"
 
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <numeric>
@@ -32,23 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using Point = Double_kernel::Point_3;
 
-const char* format_name(Mesh_format format)
-{
-  switch(format) {
-    case Mesh_format::off:
-      return "OFF";
-    case Mesh_format::obj:
-      return "OBJ";
-    case Mesh_format::ply:
-      return "PLY";
-    case Mesh_format::stl:
-      return "STL";
-  }
-  return "?";
-}
-
-// CGAL's readers may talk on std::cerr; keep it off the one-line error rule,
-// and keep what they said for the message.
+// CGAL's writers may talk on std::cerr; keep it off the one-line error rule
 class Captured_cerr
 {
 public:
@@ -56,15 +40,6 @@ public:
   ~Captured_cerr() { std::cerr.rdbuf(m_old); }
   Captured_cerr(const Captured_cerr&) = delete;
   Captured_cerr& operator=(const Captured_cerr&) = delete;
-  // the first line CGAL wrote, if any
-  std::string first_line() const
-  {
-    std::istringstream in(m_buffer.str());
-    for(std::string line; std::getline(in, line);)
-      if(line.find_first_not_of(" \t\r") != std::string::npos)
-        return line;
-    return "";
-  }
 
 private:
   std::ostringstream m_buffer;
@@ -83,24 +58,25 @@ using Polygon = std::vector<std::size_t>;
 
 /*
  * Why a polygon soup is not a manifold polygon mesh, naming the first face,
- * edge or vertex at fault by its coordinates (which every format shares).
+ * edge or vertex at fault: vertex v by its number in the file
+ * (`file_numbers[v]`, if there is one) and its coordinates.
  * Empty if nothing was found.
  */
-std::string soup_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons)
+std::string soup_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
+                         const std::vector<std::size_t>& file_numbers)
 {
+  // "vertex 7 (0 1 0)": the number the file gives it, if known, and its point
+  const auto name = [&](std::size_t v) {
+    return "vertex " + (v < file_numbers.size() ? std::to_string(file_numbers[v]) + " " : std::string()) +
+           point_text(points[v]);
+  };
   for(std::size_t f = 0; f < polygons.size(); ++f) {
-    const Polygon& poly = polygons[f];
-    if(poly.size() < 3)
-      return "face " + std::to_string(f) + " has only " + std::to_string(poly.size()) + " vertices";
-    for(std::size_t i : poly)
-      if(i >= points.size())
-        return "face " + std::to_string(f) + " uses vertex " + std::to_string(i) + ", but there are only " +
-               std::to_string(points.size());
+    const Polygon& poly = polygons[f]; // its size and indices checked by the reader
     Polygon sorted = poly;
     std::sort(sorted.begin(), sorted.end());
     const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
     if(twice != sorted.end())
-      return "face " + std::to_string(f) + " passes twice through vertex " + point_text(points[*twice]);
+      return "face " + std::to_string(f) + " passes twice through " + name(*twice);
   }
   // edges: how many faces use each, and in which direction
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> directed;
@@ -115,13 +91,12 @@ std::string soup_problem(const std::vector<Point>& points, const std::vector<Pol
   }
   for(const auto& [edge, count] : undirected)
     if(count > 2)
-      return "the edge from " + point_text(points[edge.first]) + " to " + point_text(points[edge.second]) +
-             " belongs to " + std::to_string(count) + " faces";
+      return "the edge from " + name(edge.first) + " to " + name(edge.second) + " belongs to " + std::to_string(count) +
+             " faces";
   for(const auto& [edge, faces] : directed)
     if(faces.size() > 1)
       return "faces " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) +
-             " are not consistently oriented (both run from " + point_text(points[edge.first]) + " to " +
-             point_text(points[edge.second]) + ")";
+             " are not consistently oriented (both run from " + name(edge.first) + " to " + name(edge.second) + ")";
   // vertices: the corners around a vertex must form one fan (corners that
   // share an edge at the vertex are joined)
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> corners(points.size()); // (prev, next)
@@ -152,37 +127,9 @@ std::string soup_problem(const std::vector<Point>& points, const std::vector<Pol
     for(std::size_t c = 0; c < around.size(); ++c)
       fans.insert(root(c));
     if(fans.size() > 1)
-      return "vertex " + point_text(points[v]) + " is non-manifold (its faces form " + std::to_string(fans.size()) +
-             " separate fans)";
+      return name(v) + " is non-manifold (its faces form " + std::to_string(fans.size()) + " separate fans)";
   }
   return "";
-}
-
-// Surface_mesh readers keep what a file holds besides the points (PLY
-// properties, OFF colours and normals); the schemes do not carry them, so the
-// mesh is copied without them.
-bool has_extra_properties(const Surface& mesh)
-{
-  const std::set<std::string> internal = {"v:connectivity", "v:point",        "v:removed", "h:connectivity",
-                                          "e:removed",      "f:connectivity", "f:removed"};
-  std::vector<std::string> names = mesh.properties<Surface::Vertex_index>();
-  for(const auto& more : {mesh.properties<Surface::Halfedge_index>(), mesh.properties<Surface::Edge_index>(),
-                          mesh.properties<Surface::Face_index>()})
-    names.insert(names.end(), more.begin(), more.end());
-  for(const std::string& name : names)
-    if(!internal.count(name))
-      return true;
-  return false;
-}
-
-void check_readable(const std::string& path)
-{
-  std::error_code ec;
-  if(fs::is_directory(path, ec))
-    throw Input_error("cannot read '" + path + "': it is a directory");
-  std::ifstream probe(path, std::ios::binary);
-  if(!probe)
-    throw Input_error("cannot read '" + path + "': " + std::strerror(errno));
 }
 
 std::string lower(std::string s)
@@ -240,50 +187,70 @@ std::string describe(const Mesh_counts& c)
   return std::to_string(c.vertices) + " V, " + std::to_string(c.edges) + " E, " + std::to_string(c.faces) + " F";
 }
 
+namespace {
+
+// the soup in CGAL's form, without the vertices that no face uses (with a
+// note: OpenSubdiv accepts them, and they play no part in any scheme)
+void to_cgal_soup(const Mesh_soup& soup, const std::string& path, std::size_t first_number, std::vector<Point>& points,
+                  std::vector<Polygon>& polygons, std::vector<std::size_t>& file_numbers,
+                  std::vector<std::string>& notes)
+{
+  constexpr std::size_t unused = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> new_index(soup.points.size(), unused);
+  for(std::size_t i : soup.indices)
+    new_index[i] = 0;
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+    if(new_index[v] != unused) {
+      new_index[v] = kept++;
+      file_numbers.push_back(first_number + v);
+      const auto& p = soup.points[v];
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+  if(kept < soup.points.size())
+    notes.push_back("dropped the " + std::to_string(soup.points.size() - kept) + " vertices of '" + path +
+                    "' that no face uses (of " + std::to_string(soup.points.size()) + ")");
+  polygons.resize(soup.number_of_faces());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t k = soup.face_starts[f]; k < soup.face_starts[f + 1]; ++k)
+      polygons[f].push_back(new_index[soup.indices[k]]);
+}
+
+} // namespace
+
 Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes)
 {
   const Mesh_format format = mesh_format(path, "INPUT");
-  check_readable(path);
-  Surface mesh;
-  bool ok = false;
-  std::string said;
-  {
-    Captured_cerr quiet;
-    if(repair)
-      ok = CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(true));
-    else
-      ok = CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(true));
-    said = quiet.first_line();
+  // every index in range, every coordinate finite, before CGAL sees anything
+  const Mesh_soup soup = read_mesh_soup(path, format);
+  notes.insert(notes.end(), soup.notes.begin(), soup.notes.end());
+  if(!soup.tags.empty())
+    notes.push_back("ignored " + std::to_string(soup.tags.size()) +
+                    (soup.tags.size() == 1 ? " tag line" : " tag lines") + " (t) of '" + path +
+                    "': creases, corners and holes are not supported yet, the surface is refined smooth");
+  if(soup.number_of_faces() == 0)
+    throw Input_error("'" + path + "' holds no faces");
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  std::vector<std::size_t> file_numbers; // of the vertices kept (OBJ counts from 1)
+  to_cgal_soup(soup, path, format == Mesh_format::obj ? 1 : 0, points, polygons, file_numbers, notes);
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(repair) {
+    PMP::repair_polygon_soup(points, polygons);
+    PMP::orient_polygon_soup(points, polygons);
+    file_numbers.clear(); // the repair merges and splits vertices
+    if(polygons.empty())
+      throw Input_error("'" + path + "' holds no faces once repaired (every face was degenerate)");
   }
-  if(!ok) {
-    // find out why: a file that does not parse, or a soup that is no manifold mesh
-    std::vector<Point> points;
-    std::vector<Polygon> polygons;
-    bool soup = false;
-    {
-      Captured_cerr quiet;
-      soup = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(true));
-      if(said.empty())
-        said = quiet.first_line();
-    }
-    if(!soup || (points.empty() && polygons.empty()))
-      throw Input_error(
-        "cannot read '" + path + "' as " + format_name(format) + ": " +
-        (said.empty() ? "CGAL's reader rejects it (malformed or truncated)" : "CGAL's reader says \"" + said + "\""));
-    const std::string problem = soup_problem(points, polygons);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    const std::string problem = soup_problem(points, polygons, file_numbers);
     throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
                       (repair ? "" : " (--repair makes one of it)"));
   }
-  if(mesh.number_of_faces() == 0)
-    throw Input_error("'" + path + "' holds no faces");
+  Surface mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   if(repair)
     notes.push_back("read '" + path + "' as a repaired, oriented polygon soup: " + describe(counts(mesh)));
-  if(has_extra_properties(mesh)) {
-    Surface plain;
-    CGAL::copy_face_graph(mesh, plain);
-    notes.push_back("ignored the properties of '" + path + "' other than the points (colours, normals, ...)");
-    return plain;
-  }
   return mesh;
 }
 
@@ -319,28 +286,39 @@ void write_surface(const Surface& mesh, const std::string& path)
     }
   }
   if(!ok)
-    throw Input_error("cannot write '" + path + "' as " + format_name(format));
+    throw Input_error("cannot write '" + path + "' as " + mesh_format_name(format));
   file.commit();
 }
 
-Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+double predicted_faces(const Surface_scheme& scheme, double faces, int levels)
+{
+  return faces * std::pow(scheme.face_growth, levels);
+}
+
+void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int levels, double max_memory)
+{
+  CGAL::Subdiv::internal::check_output_faces(scheme.name, static_cast<double>(mesh.number_of_faces()),
+                                             scheme.face_growth, scheme.bytes_per_face, levels, max_memory,
+                                             "--max-memory raises it");
+}
+
+Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
                                  const Level_callback& on_level)
 {
   Surface_result result;
   result.in = counts(mesh);
   // refuse before any work (the library would refuse too, level by level)
-  CGAL::Subdiv::internal::check_output_faces(scheme.name, static_cast<double>(result.in.faces), scheme.face_growth,
-                                             levels);
+  check_output_size(scheme, mesh, levels, max_memory);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   if(on_level && scheme.level_by_level && levels > 1) {
     for(int level = 1; level <= levels; ++level) {
-      scheme.run(mesh, 1);
+      scheme.run(mesh, 1, max_memory);
       on_level(level, counts(mesh), seconds());
     }
   } else {
-    scheme.run(mesh, levels);
+    scheme.run(mesh, levels, max_memory);
     if(on_level && levels > 0)
       on_level(levels, counts(mesh), seconds());
   }

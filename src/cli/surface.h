@@ -7,6 +7,7 @@
 #define CGAL_SUBDIV_CLI_SURFACE_H
 
 #include "common.h"
+#include "mesh_soup.h"
 
 #include <CGAL/Surface_mesh.h>
 
@@ -24,17 +25,20 @@ struct Surface_scheme
 {
   std::string name;        // the keyword, e.g. "catmull-clark"
   std::string description; // one line for --help and the demo
-  /// refines `mesh` `levels` times; throws CGAL::Subdiv::Bad_input when the
-  /// scheme does not apply (the mesh is then unchanged)
-  std::function<void(Surface& mesh, int levels)> run;
+  /// refines `mesh` `levels` times, refusing an output above `max_memory`
+  /// bytes (0: this machine's memory); throws CGAL::Subdiv::Bad_input when
+  /// the scheme does not apply (the mesh is then unchanged)
+  std::function<void(Surface& mesh, int levels, double max_memory)> run;
   /// refines triangle meshes only
   bool triangles_only = true;
   /// whether `run(m, a); run(m, b)` equals `run(m, a + b)`, so that a long run
   /// can report its progress level by level
   bool level_by_level = true;
-  /// factor by which the face count grows per level (for the size check
-  /// before any work; the library checks again)
+  /// factor by which the face count grows per level, and the peak memory
+  /// per output face (for the size check before any work; the library
+  /// checks again): the host's own numbers
   double face_growth = 4;
+  double bytes_per_face = 100;
 };
 
 /// every scheme this build offers, in the order of --help
@@ -47,8 +51,6 @@ const Surface_scheme& find_surface_scheme(const std::string& name);
 
 /// "loop, loop-warren, ... or linear"
 std::string list_surface_schemes();
-
-enum class Mesh_format { off, obj, ply, stl };
 
 /// the format of `path` from its extension (any letter case);
 /// \throws Usage_error naming `role` ("INPUT", "OUTPUT") for any other extension
@@ -63,13 +65,15 @@ Mesh_counts counts(const Surface& mesh);
 std::string describe(const Mesh_counts& counts);
 
 /*
- * reads `path` (format from the extension) with CGAL::IO::read_polygon_mesh.
- * With `repair`, a file that is a polygon soup but not a manifold mesh is
- * repaired and oriented (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh)
- * and a note says so.
+ * reads `path` (format from the extension) with the checked reader of
+ * mesh_soup.h, drops the vertices that no face uses (with a note), and builds
+ * the mesh with CGAL::Polygon_mesh_processing once the soup is known to be a
+ * manifold polygon mesh. With `repair`, a soup that is not one is repaired and
+ * oriented first (repair_polygon_soup, orient_polygon_soup) and a note says so.
+ * What the file holds besides points and faces is ignored, with a note.
  * \throws Input_error saying why the file cannot be used: missing, not
- *         readable, not parsable, not a manifold polygon mesh (naming an edge
- *         or a vertex), no faces
+ *         readable, malformed (naming the line or byte), not a manifold
+ *         polygon mesh (naming a face, an edge or a vertex), no faces
  */
 Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes);
 
@@ -86,14 +90,23 @@ struct Surface_result
   double seconds = 0; // subdivision only, not reading or writing
 };
 
+/// the faces of `levels` levels of `scheme` on `faces` faces, as a double
+/// (inf when too large), in constant time
+double predicted_faces(const Surface_scheme& scheme, double faces, int levels);
+
+/// refuses, in constant time, `levels` levels of `scheme` on `mesh` whose
+/// output would take more than `max_memory` bytes (0: this machine's memory)
+/// \throws CGAL::Subdiv::Bad_input that names the output faces and GB
+void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int levels, double max_memory);
+
 /*
  * refines `mesh` `levels` times with `scheme`. Checks first that the output
- * fits in memory (negative levels and too large outputs are refused before any
- * work). If `on_level` is set and the scheme allows it, runs level by level and
- * calls it after each level.
+ * fits in `max_memory` bytes (0: this machine's memory; negative levels and
+ * too large outputs are refused before any work). If `on_level` is set and
+ * the scheme allows it, runs level by level and calls it after each level.
  * \throws CGAL::Subdiv::Bad_input when the scheme does not apply
  */
-Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
                                  const Level_callback& on_level = Level_callback());
 
 } // namespace cgal_subdiv

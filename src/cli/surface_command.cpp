@@ -17,7 +17,8 @@ namespace cgal_subdiv {
 namespace {
 
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
-                           [--displace HEIGHTS] [--repair] [--verbose]
+                           [--displace HEIGHTS] [--repair] [--max-memory SIZE]
+                           [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -52,6 +53,10 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --repair              read INPUT as a polygon soup, repair and orient it
                         (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh):
                         for files that are not manifold meshes as they stand
+  --max-memory SIZE     refuse, before any work, a run whose output would take
+                        more memory than SIZE (default: this machine's memory),
+                        e.g. 8G, 512MB, 2GiB; the estimate is the output faces
+                        times the measured bytes per face (doc/memory.md)
   -v, --verbose         a line on stderr per level (V, E, F, time); without it,
                         such lines appear on runs whose output exceeds a
                         million faces, once the run has taken a second
@@ -66,8 +71,9 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 )";
 
 const std::vector<Option_spec> surface_options = {
-  {{"-o", "--output"}, true}, {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
-  {{"--limit"}, false},       {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}};
+  {{"-o", "--output"}, true},   {{"--scheme"}, true},      {{"--levels"}, true},
+  {{"--repair"}, false},        {{"--limit"}, false},      {{"--displace"}, true},
+  {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}, {{"--max-memory"}, true}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -144,6 +150,7 @@ int surface_command(const std::vector<std::string>& arguments)
   if(levels < 0)
     throw Input_error("the number of levels must not be negative, got " + std::to_string(levels));
   const Surface_scheme& scheme = find_surface_scheme(args.value("--scheme"));
+  const double max_memory = args.bytes("--max-memory", 0);
   const bool verbose = args.has("-v");
   const bool displace = args.has("--displace");
 
@@ -161,15 +168,13 @@ int surface_command(const std::vector<std::string>& arguments)
   };
   // level by level (a library call each, each checking its input) only when
   // asked or when the run is long enough for progress to matter
-  double predicted_faces = static_cast<double>(mesh.number_of_faces());
-  for(int level = 0; level < levels; ++level)
-    predicted_faces *= scheme.face_growth;
-  const bool by_level = verbose || predicted_faces >= 1e6;
+  check_output_size(scheme, mesh, levels, max_memory);
+  const bool by_level = verbose || predicted_faces(scheme, static_cast<double>(mesh.number_of_faces()), levels) >= 1e6;
   Surface_result result;
   if(displace) {
-    result = displace_surface(mesh, scheme, levels, heights);
+    result = displace_surface(mesh, scheme, levels, max_memory, heights);
   } else {
-    result = subdivide_surface(mesh, scheme, levels, by_level ? progress : Level_callback());
+    result = subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback());
     if(args.has("--limit")) {
       const auto start = std::chrono::steady_clock::now();
       project_surface_to_limit(mesh, scheme);

@@ -60,7 +60,7 @@ std::vector<Surface_demo_row> run_surface_demo(const std::vector<Demo_mesh>& mes
       if(read_failure.empty()) {
         try {
           Surface mesh = original;
-          row.result = subdivide_surface(mesh, scheme, row.levels);
+          row.result = subdivide_surface(mesh, scheme, row.levels, 0);
           write_surface(mesh, (dir / (row.name + ".off")).string());
         } catch(const std::exception& e) {
           row.failure = e.what();

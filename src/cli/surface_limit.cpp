@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -72,11 +73,12 @@ struct Displace
 {
   Surface& mesh;
   int levels;
+  double max_memory;
   Surface::Property_map<Vertex, double> heights;
   template <class Mask>
   void operator()(const Mask& mask) const
   {
-    SD::displace(mesh, mask, heights, SD::parameters::number_of_iterations(levels));
+    SD::displace(mesh, mask, heights, SD::parameters::number_of_iterations(levels).max_memory(max_memory));
   }
 };
 
@@ -95,12 +97,17 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
       continue;
     const std::size_t last = line.find_last_not_of(" \t\r");
     const std::string text = line.substr(first, last - first + 1);
+    double height = 0;
     try {
-      heights.push_back(nearest_double(parse_number(text)));
+      height = nearest_double(parse_number(text));
     } catch(const std::exception&) {
       throw Input_error("HEIGHTS '" + path + "' line " + std::to_string(number) + ": cannot read '" + text +
                         "' as a number");
     }
+    if(!std::isfinite(height))
+      throw Input_error("HEIGHTS '" + path + "' line " + std::to_string(number) + ": '" + text +
+                        "' is too large for a double");
+    heights.push_back(height);
   }
   if(heights.size() != vertices)
     throw Input_error("HEIGHTS '" + path + "' has " + std::to_string(heights.size()) + " heights, INPUT has " +
@@ -113,20 +120,19 @@ void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme)
   with_mask(scheme, mesh, Project{mesh});
 }
 
-Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
                                 const std::vector<double>& heights)
 {
   Surface_result result;
   result.in = counts(mesh);
-  CGAL::Subdiv::internal::check_output_faces(scheme.name, static_cast<double>(result.in.faces), scheme.face_growth,
-                                             levels);
+  check_output_size(scheme, mesh, levels, max_memory);
   const auto start = std::chrono::steady_clock::now();
   auto map = mesh.add_property_map<Vertex, double>("v:cgal_subdiv_height", 0.0).first;
   std::size_t k = 0;
   for(Vertex v : mesh.vertices())
     map[v] = heights.at(k++);
   // linear: the mask follows the mesh before refinement, as `linear` does
-  with_mask(scheme, mesh, Displace{mesh, levels, map});
+  with_mask(scheme, mesh, Displace{mesh, levels, max_memory, map});
   mesh.remove_property_map(map);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.out = counts(mesh);

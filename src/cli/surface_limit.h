@@ -32,7 +32,7 @@ void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme);
  * order) with the scheme's stencils, then moves every vertex to its limit
  * position plus its limit height along its unit limit normal
  */
-Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels,
+Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
                                 const std::vector<double>& heights);
 
 } // namespace cgal_subdiv

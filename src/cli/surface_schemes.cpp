@@ -12,10 +12,14 @@ namespace {
 
 namespace SD = CGAL::Subdiv;
 
+using Run = std::function<void(Surface&, int, double)>;
+
 template <class Wrapper>
-std::function<void(Surface&, int)> call(Wrapper wrapper)
+Run call(Wrapper wrapper)
 {
-  return [wrapper](Surface& mesh, int levels) { wrapper(mesh, CGAL::parameters::number_of_iterations(levels)); };
+  return [wrapper](Surface& mesh, int levels, double max_memory) {
+    wrapper(mesh, SD::parameters::number_of_iterations(levels).max_memory(max_memory));
+  };
 }
 
 #define SUBDIV_CLI_WRAP(function) call([](Surface& m, const auto& np) { SD::function(m, np); })
@@ -27,6 +31,15 @@ const auto linear = call([](Surface& m, const auto& np) {
   else
     SD::linear_quad_subdivision(m, np);
 });
+
+// a row of the table: the growth per level and the peak bytes per face come
+// from the host of the scheme's mask (the library's own size check)
+template <class Mask>
+Surface_scheme row(const std::string& name, const std::string& description, const Run& run, bool triangles_only)
+{
+  using Host = SD::Host_of<Mask>;
+  return Surface_scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face()};
+}
 
 } // namespace
 
@@ -40,20 +53,27 @@ const std::vector<std::string>& surface_scheme_keywords()
 
 const std::vector<Surface_scheme>& surface_schemes()
 {
-  // name, description, run, triangles only, level by level, face growth per level
+  // name, description, mask (for the size check), run, triangles only
   static const std::vector<Surface_scheme> schemes = {
-    {"loop", "Loop, Loop's 1987 beta (as CGAL and OpenSubdiv)", SUBDIV_CLI_WRAP(loop_subdivision), true, true, 4},
-    {"loop-warren", "Loop with Warren's rational beta", SUBDIV_CLI_WRAP(loop_warren_subdivision), true, true, 4},
-    {"catmull-clark", "Catmull-Clark (quads out)", SUBDIV_CLI_WRAP(catmull_clark_subdivision), false, true, 4},
-    {"doo-sabin", "Doo-Sabin (the dual scheme)", SUBDIV_CLI_WRAP(doo_sabin_subdivision), false, true, 4},
-    {"sqrt3", "Kobbelt's sqrt3", SUBDIV_CLI_WRAP(sqrt3_subdivision), true, true, 3},
-    {"butterfly", "butterfly (Dyn, Levin, Gregory), interpolating", SUBDIV_CLI_WRAP(butterfly_subdivision), true, true,
-     4},
-    {"modified-butterfly", "modified butterfly (Zorin, Schroeder, Sweldens), interpolating",
-     SUBDIV_CLI_WRAP(modified_butterfly_subdivision), true, true, 4},
-    {"interpolating-sqrt3", "Labsik and Greiner's interpolating sqrt3",
-     SUBDIV_CLI_WRAP(interpolating_sqrt3_subdivision), true, true, 3},
-    {"linear", "midpoints: the 1-to-4 split of a triangle mesh, the quad split of any other", linear, false, true, 4},
+    row<SD::Loop_mask<Surface>>("loop", "Loop, Loop's 1987 beta (as CGAL and OpenSubdiv)",
+                                SUBDIV_CLI_WRAP(loop_subdivision), true),
+    row<SD::Loop_warren_mask<Surface>>("loop-warren", "Loop with Warren's rational beta",
+                                       SUBDIV_CLI_WRAP(loop_warren_subdivision), true),
+    row<SD::Catmull_clark_mask<Surface>>("catmull-clark", "Catmull-Clark (quads out)",
+                                         SUBDIV_CLI_WRAP(catmull_clark_subdivision), false),
+    row<SD::Doo_sabin_mask<Surface>>("doo-sabin", "Doo-Sabin (the dual scheme)", SUBDIV_CLI_WRAP(doo_sabin_subdivision),
+                                     false),
+    row<SD::Sqrt3_mask<Surface>>("sqrt3", "Kobbelt's sqrt3", SUBDIV_CLI_WRAP(sqrt3_subdivision), true),
+    row<SD::Butterfly_mask<Surface>>("butterfly", "butterfly (Dyn, Levin, Gregory), interpolating",
+                                     SUBDIV_CLI_WRAP(butterfly_subdivision), true),
+    row<SD::Modified_butterfly_mask<Surface>>("modified-butterfly",
+                                              "modified butterfly (Zorin, Schroeder, Sweldens), interpolating",
+                                              SUBDIV_CLI_WRAP(modified_butterfly_subdivision), true),
+    row<SD::Interpolating_sqrt3_mask<Surface>>("interpolating-sqrt3", "Labsik and Greiner's interpolating sqrt3",
+                                               SUBDIV_CLI_WRAP(interpolating_sqrt3_subdivision), true),
+    // the quad split costs more per face than the 1-to-4 split: the size check takes it
+    row<SD::Linear_quad_mask<Surface>>(
+      "linear", "midpoints: the 1-to-4 split of a triangle mesh, the quad split of any other", linear, false),
   };
   return schemes;
 }

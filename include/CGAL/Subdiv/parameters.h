@@ -46,6 +46,8 @@ struct seed_t
 {};
 struct rings_t
 {};
+struct max_memory_t
+{};
 
 } // namespace internal
 
@@ -59,6 +61,65 @@ using CGAL::parameters::default_values;
 using CGAL::parameters::get_parameter;
 using CGAL::parameters::get_parameter_reference;
 using CGAL::parameters::is_default_parameter;
+
+/*
+ * Every named parameter the package reads, listed once; each becomes a free
+ * function (`CGAL::Subdiv::parameters::threads(2)`) and a member of the chain
+ * (`....threads(2)`).
+ *
+ * CGAL's own:
+ *  - number_of_iterations: how many levels (default 1);
+ *  - vertex_point_map: the points (default the mesh's);
+ *  - geom_traits: the kernel;
+ *  - vertex_normal_map: where the limit functions write normals.
+ * The package's:
+ *  - threads: how many threads the fast paths use (see `subdivide()`): 1 (the
+ *    default) the calling thread, 0 TBB's choice, n > 1 at most n; the
+ *    results do not depend on it, bit for bit;
+ *  - closed: curves, whether the polyline is closed (default false);
+ *  - end_rule: curves, what happens at the ends of an open polyline (`End_rule`);
+ *  - max_output_points: curves, refuse, before allocating, a call whose output
+ *    would have more points;
+ *  - flatness_tolerance: Bezier curves, refine each segment until it is this
+ *    flat (instead of a fixed depth);
+ *  - characteristic_map: analysis, test the characteristic map, the costliest
+ *    part (default true);
+ *  - verify_limit: analysis, subdivide a random neighbourhood and compare its
+ *    limit with the limit mask (default true);
+ *  - max_faces: analysis, the characteristic-map and verification meshes stop
+ *    growing at this many faces (default 120000);
+ *  - seed: analysis, the seed of the random neighbourhood of the verification
+ *    (default 20260);
+ *  - rings: analysis, the rings of the neighbourhood of a local subdivision
+ *    matrix (default: the smallest invariant one);
+ *  - max_memory: surfaces, the memory (bytes) that the output may take
+ *    (default this machine's): a level count whose output would take more
+ *    is refused before any work.
+ * Kept by reference (the chain holds a pointer to the argument):
+ *  - carried_data: other vertex and face data to carry through the levels
+ *    (`Carried_data`);
+ *  - refined_mesh: where `make_stencil_table()` puts the refined mesh.
+ */
+#define CGAL_SUBDIV_FOR_EACH_VALUE_PARAMETER(X)                      \
+  X(number_of_iterations, CGAL::internal_np::number_of_iterations_t) \
+  X(vertex_point_map, CGAL::internal_np::vertex_point_t)             \
+  X(geom_traits, CGAL::internal_np::geom_traits_t)                   \
+  X(vertex_normal_map, CGAL::internal_np::vertex_normal_map_t)       \
+  X(threads, internal::threads_t)                                    \
+  X(closed, internal::closed_t)                                      \
+  X(end_rule, internal::end_rule_t)                                  \
+  X(max_output_points, internal::max_output_points_t)                \
+  X(flatness_tolerance, internal::flatness_tolerance_t)              \
+  X(characteristic_map, internal::characteristic_map_t)              \
+  X(verify_limit, internal::verify_limit_t)                          \
+  X(max_faces, internal::max_faces_t)                                \
+  X(seed, internal::seed_t)                                          \
+  X(rings, internal::rings_t)                                        \
+  X(max_memory, internal::max_memory_t)
+// (name, tag, const if the argument is read only)
+#define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
+  X(carried_data, internal::carried_data_t, const)  \
+  X(refined_mesh, internal::refined_mesh_t, )
 
 /*!
  * \ingroup PkgSubdivFunctions
@@ -76,100 +137,55 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters(const T& v) : Nfp(v) {}
   Named_parameters(const T& v, const Base& b) : Nfp(v, b) {}
 
-#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG)          \
+#define CGAL_SUBDIV_VALUE_MEMBER(NAME, TAG)             \
   template <class K>                                    \
   Named_parameters<K, TAG, self> NAME(const K& k) const \
   {                                                     \
     return Named_parameters<K, TAG, self>(k, *this);    \
   }
-  // CGAL's own
-  CGAL_SUBDIV_NAMED_PARAMETER(number_of_iterations, CGAL::internal_np::number_of_iterations_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(vertex_point_map, CGAL::internal_np::vertex_point_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(geom_traits, CGAL::internal_np::geom_traits_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(vertex_normal_map, CGAL::internal_np::vertex_normal_map_t)
-  // the package's
-  CGAL_SUBDIV_NAMED_PARAMETER(threads, internal::threads_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(closed, internal::closed_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(end_rule, internal::end_rule_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(max_output_points, internal::max_output_points_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(flatness_tolerance, internal::flatness_tolerance_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(characteristic_map, internal::characteristic_map_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(verify_limit, internal::verify_limit_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(max_faces, internal::max_faces_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(seed, internal::seed_t)
-  CGAL_SUBDIV_NAMED_PARAMETER(rings, internal::rings_t)
-#undef CGAL_SUBDIV_NAMED_PARAMETER
-
-  /// other vertex and face data to carry through the levels (`Carried_data`)
-  template <class Data>
-  Named_parameters<const Data*, internal::carried_data_t, self> carried_data(const Data& data) const
-  {
-    return Named_parameters<const Data*, internal::carried_data_t, self>(&data, *this);
+#define CGAL_SUBDIV_REFERENCE_MEMBER(NAME, TAG, CONST)         \
+  template <class K>                                           \
+  Named_parameters<CONST K*, TAG, self> NAME(CONST K& k) const \
+  {                                                            \
+    return Named_parameters<CONST K*, TAG, self>(&k, *this);   \
   }
-
-  /// where to put the refined mesh (`make_stencil_table()`)
-  template <class Mesh>
-  Named_parameters<Mesh*, internal::refined_mesh_t, self> refined_mesh(Mesh& mesh) const
-  {
-    return Named_parameters<Mesh*, internal::refined_mesh_t, self>(&mesh, *this);
-  }
+  CGAL_SUBDIV_FOR_EACH_VALUE_PARAMETER(CGAL_SUBDIV_VALUE_MEMBER)
+  CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(CGAL_SUBDIV_REFERENCE_MEMBER)
+#undef CGAL_SUBDIV_VALUE_MEMBER
+#undef CGAL_SUBDIV_REFERENCE_MEMBER
 };
 
-#define CGAL_SUBDIV_NAMED_PARAMETER(NAME, TAG) \
-  template <class K>                           \
-  Named_parameters<K, TAG> NAME(const K& k)    \
-  {                                            \
-    return Named_parameters<K, TAG>(k);        \
+#define CGAL_SUBDIV_VALUE_FUNCTION(NAME, TAG) \
+  template <class K>                          \
+  Named_parameters<K, TAG> NAME(const K& k)   \
+  {                                           \
+    return Named_parameters<K, TAG>(k);       \
   }
-/// \name CGAL's named parameters that the package reads
-/// @{
-CGAL_SUBDIV_NAMED_PARAMETER(number_of_iterations, CGAL::internal_np::number_of_iterations_t)
-CGAL_SUBDIV_NAMED_PARAMETER(vertex_point_map, CGAL::internal_np::vertex_point_t)
-CGAL_SUBDIV_NAMED_PARAMETER(geom_traits, CGAL::internal_np::geom_traits_t)
-CGAL_SUBDIV_NAMED_PARAMETER(vertex_normal_map, CGAL::internal_np::vertex_normal_map_t)
-/// @}
-/// \name The package's own named parameters
-/// @{
-/// how many threads the fast paths use (see `CGAL::Subdiv::subdivide()`):
-/// 1 (the default) the calling thread, 0 TBB's choice, n > 1 at most n; the
-/// results do not depend on it, bit for bit
-CGAL_SUBDIV_NAMED_PARAMETER(threads, internal::threads_t)
-/// curves: whether the polyline is closed (default false)
-CGAL_SUBDIV_NAMED_PARAMETER(closed, internal::closed_t)
-/// curves: what happens at the ends of an open polyline (`End_rule`)
-CGAL_SUBDIV_NAMED_PARAMETER(end_rule, internal::end_rule_t)
-/// curves: refuse, before allocating, a call whose output would have more points
-CGAL_SUBDIV_NAMED_PARAMETER(max_output_points, internal::max_output_points_t)
-/// Bezier curves: refine each segment until it is this flat (instead of a fixed depth)
-CGAL_SUBDIV_NAMED_PARAMETER(flatness_tolerance, internal::flatness_tolerance_t)
-/// analysis: test the characteristic map, the costliest part (default true)
-CGAL_SUBDIV_NAMED_PARAMETER(characteristic_map, internal::characteristic_map_t)
-/// analysis: subdivide a random neighbourhood and compare its limit with the limit mask (default true)
-CGAL_SUBDIV_NAMED_PARAMETER(verify_limit, internal::verify_limit_t)
-/// analysis: the characteristic-map and verification meshes stop growing at this many faces (default 120000)
-CGAL_SUBDIV_NAMED_PARAMETER(max_faces, internal::max_faces_t)
-/// analysis: the seed of the random neighbourhood of the verification (default 20260)
-CGAL_SUBDIV_NAMED_PARAMETER(seed, internal::seed_t)
-/// analysis: the rings of the neighbourhood of a local subdivision matrix (default: the smallest invariant one)
-CGAL_SUBDIV_NAMED_PARAMETER(rings, internal::rings_t)
-/// @}
-#undef CGAL_SUBDIV_NAMED_PARAMETER
-
-/// other vertex and face data to carry through the levels (`Carried_data`)
-template <class Data>
-Named_parameters<const Data*, internal::carried_data_t> carried_data(const Data& data)
-{
-  return Named_parameters<const Data*, internal::carried_data_t>(&data);
-}
-
-/// where to put the refined mesh (`make_stencil_table()`)
-template <class Mesh>
-Named_parameters<Mesh*, internal::refined_mesh_t> refined_mesh(Mesh& mesh)
-{
-  return Named_parameters<Mesh*, internal::refined_mesh_t>(&mesh);
-}
+#define CGAL_SUBDIV_REFERENCE_FUNCTION(NAME, TAG, CONST) \
+  template <class K>                                     \
+  Named_parameters<CONST K*, TAG> NAME(CONST K& k)       \
+  {                                                      \
+    return Named_parameters<CONST K*, TAG>(&k);          \
+  }
+CGAL_SUBDIV_FOR_EACH_VALUE_PARAMETER(CGAL_SUBDIV_VALUE_FUNCTION)
+CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(CGAL_SUBDIV_REFERENCE_FUNCTION)
+#undef CGAL_SUBDIV_VALUE_FUNCTION
+#undef CGAL_SUBDIV_REFERENCE_FUNCTION
+#undef CGAL_SUBDIV_FOR_EACH_VALUE_PARAMETER
+#undef CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER
 
 } // namespace parameters
+
+namespace internal {
+
+/// the `max_memory` parameter in bytes, 0 if not given (this machine's memory)
+template <class NamedParameters>
+double max_memory_of(const NamedParameters& np)
+{
+  return static_cast<double>(parameters::choose_parameter(parameters::get_parameter(np, max_memory_t()), 0));
+}
+
+} // namespace internal
 } // namespace Subdiv
 } // namespace CGAL
 

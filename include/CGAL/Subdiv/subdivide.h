@@ -37,6 +37,8 @@ namespace Subdiv {
  *     points are read and written;
  *   - `carried_data` (a `Carried_data`): other vertex data interpolated with
  *     the same stencils, face data inherited by child faces, origins;
+ *   - `max_memory` (default this machine's memory, in bytes): a level count
+ *     whose output would take more is refused before any work;
  *   - `threads` (default 1; 0: TBB's choice): how many threads refine a
  *     `Surface_mesh` (points with double coordinates; with TBB only); the
  *     result is the same bit for bit with any number.
@@ -61,7 +63,8 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1);
 
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
-  internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
+  internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
+                               Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
 
   internal::reserve_levels<Host>(mesh, levels);

@@ -73,6 +73,10 @@ public:
   /// F' = F + E + V: four times F on a quad mesh, which every mesh becomes
   /// after one level, up to its extraordinary faces
   static double face_growth() { return 4; }
+  /// the peak memory of a refinement per output face, measured: the maximum
+  /// resident size of `cgal-subdiv surface` over its output faces was
+  /// 173 B (Doo-Sabin, fandisk, 5 levels, 9.9 M faces); rounded up (doc/memory.md)
+  static double peak_bytes_per_face() { return 180; }
   /// the counts after one level: not known in advance (false)
   static bool next_counts(internal::Mesh_counts&) { return false; }
 

@@ -56,6 +56,10 @@ public:
   static constexpr int ring_growth = 2;
   /// every face becomes as many quads as it has corners: 4 once all faces are quads
   static double face_growth() { return 4; }
+  /// the peak memory of a refinement per output face, measured: the maximum
+  /// resident size of `cgal-subdiv surface` over its output faces was
+  /// 121 B (Catmull-Clark, fandisk, 5 levels, 9.9 M faces); rounded up (doc/memory.md)
+  static double peak_bytes_per_face() { return 125; }
   /// the counts after one level
   static bool next_counts(internal::Mesh_counts& c)
   {

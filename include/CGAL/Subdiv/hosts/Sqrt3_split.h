@@ -161,6 +161,10 @@ public:
   static constexpr int analysis_steps = 2;
   static constexpr int ring_growth = 3;
   static double face_growth() { return 3; }
+  /// the peak memory of a refinement per output face, measured: the maximum
+  /// resident size of `cgal-subdiv surface` over its output faces was
+  /// 121 B (sqrt3, fandisk, 6 levels, 9.4 M faces); rounded up (doc/memory.md)
+  static double peak_bytes_per_face() { return 125; }
   /// the counts after one level: not known in advance (false)
   static bool next_counts(internal::Mesh_counts&) { return false; }
 

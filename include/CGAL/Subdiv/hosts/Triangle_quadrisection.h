@@ -46,6 +46,10 @@ public:
   static constexpr int analysis_steps = 1;
   static constexpr int ring_growth = 2;
   static double face_growth() { return 4; }
+  /// the peak memory of a refinement per output face, measured: the maximum
+  /// resident size of `cgal-subdiv surface` over its output faces was
+  /// 84 B (Loop, fandisk, 5 levels, 13.3 M faces); rounded up (doc/memory.md)
+  static double peak_bytes_per_face() { return 90; }
   /// the counts after one level
   static bool next_counts(internal::Mesh_counts& c)
   {

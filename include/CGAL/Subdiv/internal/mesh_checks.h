@@ -11,7 +11,10 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 
 namespace CGAL {
@@ -185,22 +188,50 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
   require(CGAL::is_valid_polygon_mesh(mesh), scheme + ": the mesh is not a valid polygon mesh");
 }
 
-// A mesh costs about this many bytes per face (vertices, halfedges, edges,
-// faces and the points, with the polygon soup built on the way).
-constexpr double bytes_per_output_face = 256;
-
-// Refuse, before allocating, a level count whose output would not fit in memory.
-inline void check_output_faces(const std::string& scheme, double faces_in, double growth_per_level, int levels)
+/// "17.0 GB", "512 MB", "3 kB": a size for a message
+inline std::string memory_text(double bytes)
 {
-  require(levels >= 0, scheme + ": the number of iterations must not be negative, got " + std::to_string(levels));
-  const double limit = physical_memory_bytes() / bytes_per_output_face;
-  double faces_out = faces_in;
-  for(int l = 0; l < levels && faces_out <= limit; ++l)
-    faces_out *= growth_per_level;
-  require(faces_out <= limit, scheme + ": " + std::to_string(levels) + " iterations on " +
-                                std::to_string(static_cast<long long>(faces_in)) +
-                                " faces would make more faces than fit in this machine's memory (about " +
-                                std::to_string(static_cast<long long>(limit)) + ")");
+  const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
+  int unit = 0;
+  while(bytes >= 1000 && unit < 6) {
+    bytes /= 1000;
+    ++unit;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, unit >= 3 ? "%.1f %s" : "%.0f %s", bytes, units[unit]);
+  return text;
+}
+
+/*
+ * Refuses, before allocating, a level count whose output would not fit in
+ * `max_bytes` (0: this machine's memory), in constant time whatever the
+ * level count: `faces_in` faces grow by `growth_per_level` per level, and
+ * each output face costs `bytes_per_face` at the peak (the host's measured
+ * `peak_bytes_per_face()`). `raise_hint` says how the caller raises the limit.
+ */
+inline void check_output_faces(const std::string& scheme, double faces_in, double growth_per_level,
+                               double bytes_per_face, int levels, double max_bytes = 0,
+                               const std::string& raise_hint = "the named parameter max_memory raises it")
+{
+  require(levels >= 0, scheme + ": the number of levels must not be negative, got " + std::to_string(levels));
+  require(max_bytes >= 0, scheme + ": the memory limit must be positive");
+  const double limit = max_bytes > 0 ? max_bytes : physical_memory_bytes();
+  // in logarithms: a billion levels must not take a billion steps
+  const double log10_faces = std::log10((std::max)(faces_in, 1.0)) + levels * std::log10(growth_per_level);
+  const double log10_bytes = log10_faces + std::log10(bytes_per_face);
+  if(log10_bytes <= std::log10(limit))
+    return;
+  const std::string faces_out = log10_faces < 15
+                                  ? std::to_string(std::llround(std::pow(10.0, log10_faces)))
+                                  : "about 10^" + std::to_string(static_cast<long long>(std::floor(log10_faces)));
+  const std::string bytes_out =
+    log10_bytes < 18 ? "about " + memory_text(std::pow(10.0, log10_bytes))
+                     : "about 10^" + std::to_string(static_cast<long long>(std::floor(log10_bytes))) + " bytes";
+  throw Bad_input(scheme + ": " + std::to_string(levels) + (levels == 1 ? " level" : " levels") + " on " +
+                  std::to_string(std::llround(faces_in)) + " faces would make " + faces_out + " faces, " + bytes_out +
+                  " at " + std::to_string(std::llround(bytes_per_face)) +
+                  " bytes per face, more than the memory limit of " + memory_text(limit) +
+                  (max_bytes > 0 ? "" : " (this machine's memory)") + "; " + raise_hint);
 }
 
 } // namespace internal

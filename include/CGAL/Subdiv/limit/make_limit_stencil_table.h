@@ -64,8 +64,9 @@ Limit_stencil_tables make_limit_stencil_tables(const PolygonMesh& mesh, const Li
   PolygonMesh* refined_mesh = choose_parameter<PolygonMesh*>(get_parameter(np, internal::refined_mesh_t()), nullptr);
   PolygonMesh refined;
   const auto vpm = get_const_property_map(CGAL::vertex_point, mesh);
-  const Stencil_table<double> table = internal::stencil_table_of(mesh, evaluator.template mask<PolygonMesh, double>(),
-                                                                 vpm, levels, &refined, internal::parallel_loop(np));
+  const Stencil_table<double> table =
+    internal::stencil_table_of(mesh, evaluator.template mask<PolygonMesh, double>(), vpm, levels, &refined,
+                               internal::parallel_loop(np), internal::max_memory_of(np));
   const internal::Limit_rows<double> rows = evaluator.template rows<double>(
     refined, get_const_property_map(CGAL::vertex_point, refined), "make_limit_stencil_tables");
   const auto to_table = [&](const internal::Rows<double>& r) {

@@ -295,12 +295,14 @@ namespace internal {
 template <class PolygonMesh, class Mask, class VertexPointMap>
 Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& mesh, const Mask& mask,
                                                            const VertexPointMap& vpm, int levels,
-                                                           PolygonMesh* refined_mesh, const Parallel_loop& loop)
+                                                           PolygonMesh* refined_mesh, const Parallel_loop& loop,
+                                                           double max_memory)
 {
   using FT = typename Mask::Number_type;
   using Host = Host_of<Mask>;
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
-  internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(), levels);
+  internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
+                               Host::peak_bytes_per_face(), levels, max_memory);
 
   const std::size_t sources = num_vertices(mesh);
   if(levels == 0 && refined_mesh == nullptr)
@@ -365,6 +367,7 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
  *   - `vertex_point_map` (default the mesh's): the points of the refined mesh;
  *   - `refined_mesh(out)`: `out` receives the refined mesh, with the points
  *     that the table gives for the current points of `mesh`;
+ *   - `max_memory` (default this machine's memory, in bytes): as `subdivide()`;
  *   - `threads` (default 1): with TBB, a `Surface_mesh` and double weights,
  *     the levels are composed in parallel; the table is the same with any
  *     number of threads.
@@ -383,7 +386,7 @@ Stencil_table<typename Mask::Number_type> make_stencil_table(const PolygonMesh& 
   PolygonMesh* refined_mesh = choose_parameter<PolygonMesh*>(get_parameter(np, internal::refined_mesh_t()), nullptr);
   const internal::Parallel_loop loop =
     std::is_floating_point<FT>::value ? internal::parallel_loop(np) : internal::Parallel_loop(1);
-  return internal::stencil_table_of(mesh, mask, vpm, levels, refined_mesh, loop);
+  return internal::stencil_table_of(mesh, mask, vpm, levels, refined_mesh, loop, internal::max_memory_of(np));
 }
 
 } // namespace Subdiv
