@@ -13,9 +13,12 @@
 #                crashes/ and fuzz.log
 #   after --      further flags for libFuzzer, e.g. -jobs=2 -workers=2
 #
-# Seeds: every .off .obj .ply .stl file under 64 KiB in ../shared/data/meshes
-# (skipped if absent) and test/cli/, prefixed by the byte that selects its
-# format in the fuzzers (0 OFF, 1 OBJ, 2 PLY, 3 STL: the byte modulo 4).
+# Seeds, as the table below says per target: mesh seeds are every .off .obj
+# .ply .stl file under 64 KiB in ../shared/data/meshes (skipped if absent) and
+# test/cli/, prefixed by the byte that selects its format in the fuzzers (0 OFF,
+# 1 OBJ, 2 PLY, 3 STL: the byte modulo 4) and by any further selector bytes;
+# curve seeds are the .txt and .dat files of test/cli/ and every file of
+# ../shared/data/curves, under 16 KiB, as they are.
 # Prints, per target, libFuzzer's final "#N DONE" line (N inputs run).
 # Exit codes: 0 no crash, 1 a build failed or a target crashed (the input is
 # in DIR/TARGET/crashes/, the report in DIR/TARGET/fuzz.log), 2 usage.
@@ -28,7 +31,7 @@ build="$root/build-fuzz"
 extra_flags=()
 
 usage() {
-  sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,26p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
   exit 2
 }
 
@@ -61,52 +64,110 @@ readonly COMMON_SOURCES=("$root/src/cli/mesh_soup.cpp")
 readonly LIBFUZZER_FLAGS=(-max_len=65536 -timeout=10 -rss_limit_mb=2048)
 
 # Per fuzzer, what it needs beyond the above: "NAME | extra sources | extra
-# flags", paths relative to the checkout. A fuzzer of the library would say
-# e.g. "subdivide_fuzzer | | -Iinclude -I/usr/include/eigen3 -lgmp -lmpfr".
-# A fuzzer missing from the table gets nothing extra.
+# flags | seeds", paths relative to the checkout (also in -I flags). Seeds:
+#  - "mesh" (or empty): the meshes, each behind its format byte;
+#  - "mesh R1 R2 ...": the meshes under 16 KiB, each behind its format byte and
+#    one more selector byte per Ri, which the fuzzer reads modulo Ri; the bytes
+#    are the mixed-radix digits of a counter that runs on over the files, so
+#    that the seeds cover the R1*R2*... combinations; rounds over the files
+#    (each with new selectors) until 400 seeds;
+#  - "curve": the curve files, as they are.
+# A fuzzer missing from the table gets nothing extra and mesh seeds.
 readonly FUZZER_TABLE=(
-  "read_mesh_soup_fuzzer | | "
+  "read_mesh_soup_fuzzer | | | mesh"
+  "subdivide_fuzzer | src/cli/surface_from_soup.cpp | -Iinclude -lgmp -lmpfr | mesh 9 3"
+  "read_polyline_fuzzer | src/cli/files.cpp src/cli/numbers.cpp | -Iinclude -lgmp -lmpfr | curve"
 )
 
-# sets `sources` and `flags` to the extras of fuzzer $1
+# sets `sources`, `flags` and `seed_kind` (an array: "mesh" or "curve", then
+# the radices of the selector bytes) to the extras of fuzzer $1
 extras_of() {
   sources=()
   flags=()
-  local row name row_sources row_flags
+  seed_kind=(mesh)
+  local row name row_sources row_flags row_seeds
   for row in "${FUZZER_TABLE[@]}"; do
-    IFS='|' read -r name row_sources row_flags <<<"$row"
+    IFS='|' read -r name row_sources row_flags row_seeds <<<"$row"
     name=${name// /}
     [[ $name == "$1" ]] || continue
     local word
     for word in $row_sources; do sources+=("$root/$word"); done
-    for word in $row_flags; do flags+=("$word"); done
+    for word in $row_flags; do
+      if [[ $word == -I* && $word != -I/* ]]; then
+        flags+=("-I$root/${word#-I}")
+      else
+        flags+=("$word")
+      fi
+    done
+    read -r -a seed_kind <<<"$row_seeds"
+    [[ ${#seed_kind[@]} -gt 0 ]] || seed_kind=(mesh)
   done
 }
 
-# the seeds of every target: the meshes, each prefixed by its format byte
+# the seeds of a target in $1, of kind "${@:2}" (see the table); prints their count
 make_seeds() {
   local seeds=$1 file extension byte count=0
+  shift
+  local kind=$1
+  shift
+  local radices=("$@")
   rm -rf "$seeds"
   mkdir -p "$seeds"
+  if [[ $kind == curve ]]; then
+    local dirs=("$root/test/cli")
+    [[ -d $root/../shared/data/curves ]] && dirs+=("$root/../shared/data/curves")
+    while IFS= read -r -d '' file; do
+      if [[ $file == "$root/test/cli/"* ]]; then
+        case ${file##*.} in txt | dat) ;; *) continue ;; esac
+      fi
+      count=$((count + 1))
+      cp "$file" "$seeds/$count.${file##*.}"
+    done < <(find "${dirs[@]}" -type f -size -16k -print0 | sort -z)
+    echo "$count"
+    return
+  fi
   local dirs=("$root/test/cli")
   if [[ -d $root/../shared/data/meshes ]]; then
     dirs+=("$root/../shared/data/meshes")
   else
     echo "fuzz.sh: no ../shared/data/meshes, seeds from test/cli only" >&2
   fi
+  # with selector bytes: smaller files, and a few combinations per file
+  local size_limit=-64k cap=400 combinations=1 radix files=() per_file=1
+  for radix in "${radices[@]}"; do combinations=$((combinations * radix)); done
+  [[ ${#radices[@]} -gt 0 ]] && size_limit=-16k
   while IFS= read -r -d '' file; do
-    extension=${file##*.}
-    case ${extension,,} in
-      off) byte='\x00' ;;
-      obj) byte='\x01' ;;
-      ply) byte='\x02' ;;
-      stl) byte='\x03' ;;
-      *) continue ;;
-    esac
-    count=$((count + 1))
-    { printf '%b' "$byte"; cat "$file"; } >"$seeds/$count.${extension,,}"
+    files+=("$file")
   done < <(find "${dirs[@]}" -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' \) \
-    -size -64k -print0 | sort -z)
+    -size "$size_limit" -print0 | sort -z)
+  # rounds over the files until the cap (each file once without selectors)
+  if [[ ${#radices[@]} -gt 0 && ${#files[@]} -gt 0 ]]; then
+    per_file=$(((cap + ${#files[@]} - 1) / ${#files[@]}))
+    [[ $per_file -le $combinations ]] || per_file=$combinations
+  fi
+  local counter=0 variant value selectors
+  for ((variant = 0; variant < per_file; ++variant)); do
+    for file in "${files[@]}"; do
+      [[ ${#radices[@]} -eq 0 || $count -lt $cap ]] || break 2
+      extension=${file##*.}
+      case ${extension,,} in
+        off) byte='\x00' ;;
+        obj) byte='\x01' ;;
+        ply) byte='\x02' ;;
+        stl) byte='\x03' ;;
+        *) continue ;;
+      esac
+      selectors=
+      value=$((counter % combinations))
+      for radix in "${radices[@]}"; do
+        selectors+=$(printf '\\x%02x' $((value % radix)))
+        value=$((value / radix))
+      done
+      counter=$((counter + 1))
+      count=$((count + 1))
+      { printf '%b' "$byte$selectors"; cat "$file"; } >"$seeds/$count.${extension,,}"
+    done
+  done
   echo "$count"
 }
 
@@ -129,7 +190,7 @@ for source in "${fuzzers[@]}"; do
     failed+=("$name (build)")
     continue
   fi
-  seed_count=$(make_seeds "$work/seeds")
+  seed_count=$(make_seeds "$work/seeds" "${seed_kind[@]}")
   echo "== $name: $seed_count seeds, fuzzing for $seconds s (log: $work/fuzz.log)"
   status=0
   "$work/$name" "$work/corpus" "$work/seeds" "${LIBFUZZER_FLAGS[@]}" -max_total_time="$seconds" \

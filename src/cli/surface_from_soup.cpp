@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#include "surface_from_soup.h"
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace cgal_subdiv {
+namespace {
+
+using Point = Double_kernel::Point_3;
+using Polygon = std::vector<std::size_t>;
+
+std::string point_text(const Point& p)
+{
+  std::ostringstream out;
+  out.precision(10);
+  out << '(' << p.x() << ' ' << p.y() << ' ' << p.z() << ')';
+  return out.str();
+}
+
+using Polygon = std::vector<std::size_t>;
+
+/*
+ * Why a polygon soup is not a manifold polygon mesh, naming the first face,
+ * edge or vertex at fault: vertex v by its number in the file
+ * (`file_numbers[v]`, if there is one) and its coordinates.
+ * Empty if nothing was found.
+ */
+std::string soup_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
+                         const std::vector<std::size_t>& file_numbers)
+{
+  // "vertex 7 (0 1 0)": the number the file gives it, if known, and its point
+  const auto name = [&](std::size_t v) {
+    return "vertex " + (v < file_numbers.size() ? std::to_string(file_numbers[v]) + " " : std::string()) +
+           point_text(points[v]);
+  };
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    const Polygon& poly = polygons[f]; // its size and indices checked by the reader
+    Polygon sorted = poly;
+    std::sort(sorted.begin(), sorted.end());
+    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+    if(twice != sorted.end())
+      return "face " + std::to_string(f) + " passes twice through " + name(*twice);
+  }
+  // edges: how many faces use each, and in which direction
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> directed;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> undirected;
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    const Polygon& poly = polygons[f];
+    for(std::size_t k = 0; k < poly.size(); ++k) {
+      const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
+      directed[{a, b}].push_back(f);
+      ++undirected[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  for(const auto& [edge, count] : undirected)
+    if(count > 2)
+      return "the edge from " + name(edge.first) + " to " + name(edge.second) + " belongs to " + std::to_string(count) +
+             " faces";
+  for(const auto& [edge, faces] : directed)
+    if(faces.size() > 1)
+      return "faces " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) +
+             " are not consistently oriented (both run from " + name(edge.first) + " to " + name(edge.second) + ")";
+  // vertices: the corners around a vertex must form one fan (corners that
+  // share an edge at the vertex are joined)
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> corners(points.size()); // (prev, next)
+  for(const Polygon& poly : polygons)
+    for(std::size_t k = 0; k < poly.size(); ++k)
+      corners[poly[k]].push_back({poly[(k + poly.size() - 1) % poly.size()], poly[(k + 1) % poly.size()]});
+  for(std::size_t v = 0; v < points.size(); ++v) {
+    const auto& around = corners[v];
+    if(around.empty())
+      continue;
+    std::vector<std::size_t> parent(around.size());
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    const auto root = [&](std::size_t i) {
+      while(parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    std::map<std::size_t, std::size_t> by_neighbour;
+    for(std::size_t c = 0; c < around.size(); ++c)
+      for(std::size_t w : {around[c].first, around[c].second}) {
+        const auto found = by_neighbour.find(w);
+        if(found == by_neighbour.end())
+          by_neighbour[w] = c;
+        else
+          parent[root(c)] = root(found->second);
+      }
+    std::set<std::size_t> fans;
+    for(std::size_t c = 0; c < around.size(); ++c)
+      fans.insert(root(c));
+    if(fans.size() > 1)
+      return name(v) + " is non-manifold (its faces form " + std::to_string(fans.size()) + " separate fans)";
+  }
+  return "";
+}
+
+// the soup in CGAL's form, without the vertices that no face uses (with a
+// note: OpenSubdiv accepts them, and they play no part in any scheme)
+void to_cgal_soup(const Mesh_soup& soup, const std::string& path, std::size_t first_number, std::vector<Point>& points,
+                  std::vector<Polygon>& polygons, std::vector<std::size_t>& file_numbers,
+                  std::vector<std::string>& notes)
+{
+  constexpr std::size_t unused = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> new_index(soup.points.size(), unused);
+  for(std::size_t i : soup.indices)
+    new_index[i] = 0;
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+    if(new_index[v] != unused) {
+      new_index[v] = kept++;
+      file_numbers.push_back(first_number + v);
+      const auto& p = soup.points[v];
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+  if(kept < soup.points.size())
+    notes.push_back("dropped the " + std::to_string(soup.points.size() - kept) + " vertices of '" + path +
+                    "' that no face uses (of " + std::to_string(soup.points.size()) + ")");
+  polygons.resize(soup.number_of_faces());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t k = soup.face_starts[f]; k < soup.face_starts[f + 1]; ++k)
+      polygons[f].push_back(new_index[soup.indices[k]]);
+}
+
+} // namespace
+
+Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, bool repair,
+                          std::vector<std::string>& notes, std::vector<std::size_t>* file_numbers_out)
+{
+  notes.insert(notes.end(), soup.notes.begin(), soup.notes.end());
+  if(!soup.tags.empty())
+    notes.push_back("ignored " + std::to_string(soup.tags.size()) +
+                    (soup.tags.size() == 1 ? " tag line" : " tag lines") + " (t) of '" + path +
+                    "': creases, corners and holes are not supported yet, the surface is refined smooth");
+  if(soup.number_of_faces() == 0)
+    throw Input_error("'" + path + "' holds no faces");
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  std::vector<std::size_t> file_numbers; // of the vertices kept (OBJ counts from 1)
+  to_cgal_soup(soup, path, format == Mesh_format::obj ? 1 : 0, points, polygons, file_numbers, notes);
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(repair) {
+    PMP::repair_polygon_soup(points, polygons);
+    PMP::orient_polygon_soup(points, polygons);
+    file_numbers.clear(); // the repair merges and splits vertices
+    if(polygons.empty())
+      throw Input_error("'" + path + "' holds no faces once repaired (every face was degenerate)");
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    const std::string problem = soup_problem(points, polygons, file_numbers);
+    throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
+                      (repair ? "" : " (--repair makes one of it)"));
+  }
+  Surface mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if(repair)
+    notes.push_back("read '" + path +
+                    "' as a repaired, oriented polygon soup: " + std::to_string(mesh.number_of_vertices()) + " V, " +
+                    std::to_string(mesh.number_of_edges()) + " E, " + std::to_string(mesh.number_of_faces()) + " F");
+  if(file_numbers_out) // polygon_soup_to_polygon_mesh makes vertex i of point i
+    *file_numbers_out = std::move(file_numbers);
+  return mesh;
+}
+
+} // namespace cgal_subdiv
