@@ -10,7 +10,7 @@ set(SUBDIV_CLI_POLYGON ${PROJECT_SOURCE_DIR}/doc/data/polygon.txt)
 # subdiv_cli_test(name ARGS arg... [CONTAINS line...] [RC n] [OUTPUT f] [POINTS n] ...)
 # see run_cli.cmake for the checks; @WORK@ is the test's own empty directory.
 function(subdiv_cli_test name)
-  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES FIRST_LINE LAST_LINE FILE FILE_REGEX TIMEOUT)
+  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES FIRST_LINE LAST_LINE FILE FILE_REGEX FILE_NOT_REGEX TIMEOUT)
   cmake_parse_arguments(T "" "${single}" "ARGS;CONTAINS" ${ARGN})
   list(JOIN T_ARGS "|" args)
   set(defs -DEXE=$<TARGET_FILE:cgal-subdiv> -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/${name} "-DARGS=${args}")
@@ -121,6 +121,19 @@ subdiv_cli_error(short_polygon 1 "announces 5 points, but only 6 coordinates fol
   ARGS curve ${SUBDIV_CLI_DIR}/short_polygon.dat ${out} --scheme chaikin --levels 1)
 subdiv_cli_error(too_large_for_double 1 "input point 3: the number 1000.* is too large for a double \\(use --exact\\)"
   ARGS curve ${SUBDIV_CLI_DIR}/huge.txt ${out} --scheme chaikin --levels 1)
+# a result that overflows the doubles is an error, and nothing is written
+subdiv_cli_error(curve_non_finite_result 1
+  "output point [0-9]+ has a non-finite coordinate: the input coordinates are too large for the scheme's weights in doubles \\(the largest, -1.7e\\+308, is at input point 1\\); scale the points down, or use --exact. Nothing was written"
+  ARGS curve ${SUBDIV_CLI_DIR}/hostile/near_max_square.txt ${out} --scheme four-point --levels 1 --closed)
+# the figure of a curve at 1e200 holds no NaN (its curvature is computed scaled)
+subdiv_cli_test(curve_svg_of_huge_coordinates
+  ARGS curve ${SUBDIV_CLI_DIR}/hostile/square_1e200.txt ${out} --scheme chaikin --levels 3 --closed --svg @WORK@/fig.svg
+  OUTPUT @WORK@/out.txt FILE @WORK@/fig.svg FILE_REGEX "curvature" FILE_NOT_REGEX "nan|inf")
+subdiv_cli_error(curve_tolerance_below_doubles 1 "--tolerance 1e-400 is below the smallest double: take a larger one, or --exact"
+  ARGS curve ${square} ${out} --scheme bezier --degree 3 --tolerance 1e-400)
+# a tolerance that may need too many points is refused at once (it grew past 1.1 GB)
+subdiv_cli_error(curve_tolerance_too_small 1 "the flatness tolerance may need up to [0-9]+ points, more than the max_output_points limit"
+  ARGS curve ${square} ${out} --scheme bezier --degree 3 --tolerance 1e-300 TIMEOUT 5)
 subdiv_cli_error(too_few_points 1 "at least 2 points, got 1"
   ARGS curve ${SUBDIV_CLI_DIR}/one_point.txt ${out} --scheme chaikin --levels 1)
 subdiv_cli_error(too_short_after_shrinking 1 "level 2 of 2: .*too short for four-point"
@@ -295,6 +308,41 @@ subdiv_cli_test(surface_unreferenced_vertices ARGS surface ${hostile}/unreferenc
 subdiv_cli_test(surface_obj_uv_and_tags ARGS surface ${hostile}/uv_and_tags.obj ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off FACES 4
   STDERR_REGEX "note: ignored 3 texture coordinates \\(vt\\) of .*note: ignored 1 tag line \\(t\\) of '[^']*uv_and_tags.obj': creases, corners and holes are not supported yet")
+
+# --- SIGTERM while writing removes the temporary file ---------------------------
+find_program(SUBDIV_SH sh)
+if(SUBDIV_SH)
+  add_test(NAME cli_signal_cleanup COMMAND ${SUBDIV_SH} ${SUBDIV_CLI_DIR}/signal_cleanup.sh $<TARGET_FILE:cgal-subdiv>
+                                           ${CMAKE_CURRENT_BINARY_DIR}/cli/signal_cleanup ${PROJECT_SOURCE_DIR}/doc/data/torus.off)
+  subdiv_timeout(signal_timeout 120)
+  set_tests_properties(cli_signal_cleanup PROPERTIES LABELS cli TIMEOUT ${signal_timeout}
+                       PASS_REGULAR_EXPRESSION "nothing left behind")
+endif()
+
+# --- non-finite results are errors, nothing is written ---------------------------
+subdiv_surface_error(surface_non_finite_result 1
+  "butterfly, 2 levels on '[^']*near_max_cube.off' gives a non-finite coordinate \\(output vertex [0-9]+\\): the coordinates of '[^']*near_max_cube.off' are too large for the scheme's weights \\(the largest, -1.7e\\+308, is at vertex 0\\); scale the mesh down. Nothing was written"
+  ARGS surface ${hostile}/near_max_cube.off ${mesh_out} --scheme butterfly --levels 2)
+set_tests_properties(cli_surface_non_finite_result PROPERTIES SKIP_REGULAR_EXPRESSION "SUBDIV_SCHEME_NOT_AVAILABLE")
+
+# --- binary outputs ----------------------------------------------------------------
+subdiv_cli_test(surface_binary_ply ARGS surface ${tetra} -o @WORK@/out.ply --scheme loop --levels 1 --binary
+  OUTPUT @WORK@/out.ply VERTICES 10 FACES 16 FILE @WORK@/out.ply FILE_REGEX "^ply\nformat binary_little_endian 1.0\n")
+# binary STL, read back by the next test (its 16 facets, merged to 10 vertices)
+subdiv_cli_test(surface_binary_stl ARGS surface ${tetra} -o @WORK@/out.stl --scheme loop --levels 1 --binary
+  OUTPUT @WORK@/out.stl FILE @WORK@/out.stl FILE_REGEX "^cgal-subdiv binary STL")
+subdiv_cli_test(surface_binary_stl_read_back
+  ARGS surface ${CMAKE_CURRENT_BINARY_DIR}/cli/surface_binary_stl/out.stl ${mesh_out} --scheme linear --levels 0
+  OUTPUT @WORK@/out.off STDOUT_REGEX "10 V, 24 E, 16 F -> 10 V, 24 E, 16 F")
+set_tests_properties(cli_surface_binary_stl PROPERTIES FIXTURES_SETUP binary_stl)
+set_tests_properties(cli_surface_binary_stl_read_back PROPERTIES FIXTURES_REQUIRED binary_stl)
+# the STL normals of huge coordinates are finite (CGAL's writer gave "facet normal 0 0 -nan")
+subdiv_cli_test(surface_stl_normals_of_huge_coordinates
+  ARGS surface ${hostile}/near_max_octahedron.off -o @WORK@/out.stl --scheme linear --levels 0
+  OUTPUT @WORK@/out.stl FILE @WORK@/out.stl FILE_REGEX "facet normal 0.57735026918962[0-9]* 0.57735026918962[0-9]* 0.57735026918962"
+  FILE_NOT_REGEX "nan|inf")
+subdiv_surface_error(surface_binary_off 2 "--binary writes PLY and STL only; OUTPUT '[^']*out.off' is OFF"
+  ARGS surface ${tetra} ${mesh_out} --scheme loop --levels 1 --binary)
 
 subdiv_surface_error(surface_unknown_scheme 2 "unknown scheme 'chaikin' \\(expected loop, "
   ARGS surface ${tetra} ${mesh_out} --scheme chaikin --levels 1)

@@ -551,6 +551,17 @@ TEST(Curve_measurements, discrete_curvature_of_regular_polygons)
   const auto corner = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(0, 0), Point_2(0, 1)},
                                             S::parameters::closed(false));
   EXPECT_NEAR(corner[1], std::sqrt(2.0), 1e-14);
+  // the same corner scaled by 1e200 and by 1e-200: its products of sides
+  // would overflow or underflow; the curvature scales by the inverse
+  for(const double scale : {1e200, 1e-200}) {
+    const auto scaled = S::discrete_curvature(std::vector<Point_2>{Point_2(scale, 0), Point_2(0, 0), Point_2(0, scale)},
+                                              S::parameters::closed(false));
+    EXPECT_NEAR(scaled[1] * scale, std::sqrt(2.0), 1e-14) << scale;
+  }
+  // repeated points have no circle through them: 0, not NaN
+  const auto repeated = S::discrete_curvature(std::vector<Point_2>{Point_2(1, 0), Point_2(1, 0), Point_2(0, 1)},
+                                              S::parameters::closed(false));
+  EXPECT_EQ(repeated[1], 0.0);
 }
 
 TEST(Curve_measurements, ratios_tend_to_the_predicted_rate)

@@ -473,6 +473,10 @@ TYPED_TEST(Curve_schemes, named_parameter_limits_are_refused)
   EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::number_of_iterations(2).flatness_tolerance(FT(1))); },
                       "not both"));
   EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::flatness_tolerance(FT(-1))); }, "positive"));
+  // a tiny tolerance is refused before any work, from the bound on the points
+  // it may need (the control points' second differences)
+  EXPECT_TRUE(refused([&] { S::bezier_subdivision(chain, 3, np::flatness_tolerance(FT(1) / FT(1e30))); },
+                      "the flatness tolerance may need up to"));
   EXPECT_TRUE(refused([&] { S::lane_riesenfeld_refine(points, 3, np::number_of_iterations(-1)); }, "negative"));
   EXPECT_TRUE(refused(
     [&] {

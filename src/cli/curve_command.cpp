@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "curve.h"
 #include "files.h"
+#include "numbers.h"
 #include "report.h"
 #include "svg.h"
 
@@ -143,6 +144,9 @@ Refine_spec parse_refine(const Parsed_args& args, Scheme_kind kind)
   refine.levels = args.integer("--levels", 0);
   refine.use_tolerance = args.has("--tolerance");
   refine.tolerance = args.number("--tolerance", Exact(0));
+  if(refine.use_tolerance && !args.has("--exact") && refine.tolerance > 0 && nearest_double(refine.tolerance) == 0)
+    throw Input_error("--tolerance " + args.value("--tolerance") +
+                      " is below the smallest double: take a larger one, or --exact");
   const std::string rule = args.value("--end-rule", "shrink");
   if(rule != "shrink" && rule != "keep-ends")
     throw Usage_error("unknown end rule '" + rule + "' (expected shrink or keep-ends)");
@@ -206,7 +210,11 @@ int curve_command(const std::vector<std::string>& arguments)
   if(command.report)
     write_report(command.job, input, report);
 
-  // everything worked: now the files appear, and the messages
+  // everything worked: now the files appear (all written before any is
+  // renamed), and the messages
+  output.finish();
+  if(svg)
+    svg->finish();
   output.commit();
   if(svg)
     svg->commit();

@@ -13,7 +13,10 @@
 
 #include <CGAL/Subdiv/curves/refine_polyline.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <type_traits>
 
 namespace cgal_subdiv {
 namespace curve_impl {
@@ -138,6 +141,16 @@ void write_points(const std::vector<Point>& points, std::ostream& out)
   }
 }
 
+// |p - q| without squaring the coordinates (which overflows beyond 1e154)
+template <class Point>
+double distance(const Point& p, const Point& q)
+{
+  const auto d = p - q;
+  return dimension_of<Point>() == 2
+           ? std::hypot(d.cartesian(0), d.cartesian(1))
+           : std::hypot(d.cartesian(0), d.cartesian(1), d.cartesian(dimension_of<Point>() - 1));
+}
+
 template <class Point>
 void add_curvature(Figure* figure, const std::vector<Point>& points, bool closed)
 {
@@ -148,11 +161,47 @@ void add_curvature(Figure* figure, const std::vector<Point>& points, bool closed
   figure->curvature = S::discrete_curvature(p, S::parameters::closed(closed));
   figure->arc_length.assign(1, 0.0);
   for(std::size_t i = 1; i < p.size(); ++i)
-    figure->arc_length.push_back(figure->arc_length.back() + std::sqrt(CGAL::squared_distance(p[i - 1], p[i])));
+    figure->arc_length.push_back(figure->arc_length.back() + distance(p[i - 1], p[i]));
   figure->has_curvature = true;
 #else
   (void)figure, (void)points, (void)closed;
 #endif
+}
+
+// refuses a result in doubles with a non-finite coordinate: every scheme's
+// weights are bounded, so the likely cause is the largest input coordinate
+template <class Point>
+void check_finite_result(const std::vector<Point>& result, const std::vector<Point>& control)
+{
+  if constexpr(std::is_floating_point<Point_FT<Point>>::value) {
+    const auto finite = [](const Point& p) {
+      for(int d = 0; d < dimension_of<Point>(); ++d)
+        if(!std::isfinite(p.cartesian(d)))
+          return false;
+      return true;
+    };
+    const auto bad = std::find_if(result.begin(), result.end(), [&](const Point& p) { return !finite(p); });
+    if(bad == result.end())
+      return;
+    std::size_t at = 0;
+    double largest = 0;
+    for(std::size_t i = 0; i < control.size(); ++i)
+      for(int d = 0; d < dimension_of<Point>(); ++d)
+        if(std::abs(control[i].cartesian(d)) > std::abs(largest)) {
+          largest = control[i].cartesian(d);
+          at = i;
+        }
+    std::ostringstream largest_text;
+    largest_text.precision(6);
+    largest_text << largest;
+    throw Input_error("output point " + std::to_string(bad - result.begin() + 1) +
+                      " has a non-finite coordinate: the input coordinates are too large for the scheme's "
+                      "weights in doubles (the largest, " +
+                      largest_text.str() + ", is at input point " + std::to_string(at + 1) +
+                      "); scale the points down, or use --exact. Nothing was written");
+  } else {
+    (void)result, (void)control;
+  }
 }
 
 template <class Point>
@@ -161,6 +210,7 @@ std::size_t compute(const Curve_job& job, const Input_polyline& input, std::ostr
   const std::vector<Point> control = make_points<Point>(input);
   const std::vector<Point> result = with_scheme<Point_FT<Point>>(
     job.scheme, [&](const auto& scheme) { return refine(control, scheme, job.refine, figure); });
+  check_finite_result(result, control);
   write_points(result, out);
   add_curvature(figure, result, job.refine.closed);
   return result.size();

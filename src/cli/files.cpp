@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -177,12 +178,59 @@ Input_polyline read_polyline(const std::string& path)
   return read_plain(path, lines);
 }
 
+namespace {
+
+// The temporary files that a signal must not leave behind: plain arrays, so
+// that the handler reads them without allocating or locking (it may run in
+// the middle of anything); a slot is claimed before the file is created.
+constexpr std::size_t max_temporaries = 16;
+constexpr std::size_t max_path = 4096;
+char temporary_paths[max_temporaries][max_path];
+volatile std::sig_atomic_t temporary_in_use[max_temporaries];
+
+std::size_t claim_temporary_slot(const std::string& path)
+{
+  for(std::size_t i = 0; i < max_temporaries; ++i)
+    if(!temporary_in_use[i] && path.size() < max_path) {
+      std::memcpy(temporary_paths[i], path.c_str(), path.size() + 1);
+      temporary_in_use[i] = 1;
+      return i;
+    }
+  return max_temporaries; // not tracked: only a signal would leave it behind
+}
+
+void release_temporary_slot(std::size_t slot)
+{
+  if(slot < max_temporaries)
+    temporary_in_use[slot] = 0;
+}
+
+extern "C" void remove_temporaries_and_die(int signal_number)
+{
+  for(std::size_t i = 0; i < max_temporaries; ++i)
+    if(temporary_in_use[i])
+      ::unlink(temporary_paths[i]);
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+} // namespace
+
+void remove_temporary_files_on_signals()
+{
+  for(int signal_number : {SIGINT, SIGTERM, SIGHUP})
+    std::signal(signal_number, remove_temporaries_and_die);
+}
+
 Atomic_file::Atomic_file(const std::string& path)
   : m_path(path), m_temporary(path + ".tmp" + std::to_string(::getpid()))
 {
+  m_slot = claim_temporary_slot(m_temporary);
   m_out.open(m_temporary);
-  if(!m_out)
+  if(!m_out) {
+    release_temporary_slot(m_slot);
     throw Input_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
 }
 
 Atomic_file::~Atomic_file()
@@ -191,17 +239,29 @@ Atomic_file::~Atomic_file()
     m_out.close();
     std::remove(m_temporary.c_str());
   }
+  release_temporary_slot(m_slot);
 }
 
-void Atomic_file::commit()
+void Atomic_file::finish()
 {
+  if(m_finished)
+    return;
   m_out.flush();
   if(!m_out)
     throw Input_error("cannot write '" + m_path + "': write failed");
   m_out.close();
+  if(m_out.fail())
+    throw Input_error("cannot write '" + m_path + "': write failed");
+  m_finished = true;
+}
+
+void Atomic_file::commit()
+{
+  finish();
   if(std::rename(m_temporary.c_str(), m_path.c_str()) != 0)
     throw Input_error("cannot write '" + m_path + "': " + std::strerror(errno));
   m_committed = true;
+  release_temporary_slot(m_slot);
 }
 
 } // namespace cgal_subdiv

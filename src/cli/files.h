@@ -7,6 +7,7 @@
 
 #include "common.h"
 
+#include <cstddef>
 #include <fstream>
 #include <string>
 
@@ -27,7 +28,9 @@ Input_polyline read_polyline(const std::string& path);
 /*
  * A file written under a temporary name in the same directory and renamed to
  * its final name by `commit()`; destroyed without `commit()`, it removes the
- * temporary file, so that a failed run leaves no partial output.
+ * temporary file, so that a failed run leaves no partial output. A run that
+ * writes several files `finish()`es them all (written, flushed, checked)
+ * before it commits any, so that it writes all of them or none.
  */
 class Atomic_file
 {
@@ -38,15 +41,23 @@ public:
   Atomic_file& operator=(const Atomic_file&) = delete;
 
   std::ostream& stream() { return m_out; }
-  /// \throws Input_error if writing failed
+  /// closes the temporary file; \throws Input_error if writing failed
+  void finish();
+  /// `finish()`, then the rename; \throws Input_error if either failed
   void commit();
 
 private:
   std::string m_path;
   std::string m_temporary;
   std::ofstream m_out;
+  std::size_t m_slot; // in the list of temporary files that signals remove
+  bool m_finished = false;
   bool m_committed = false;
 };
+
+/// installs handlers of SIGINT, SIGTERM and SIGHUP that remove the temporary
+/// files of the live `Atomic_file`s, then end the program as the signal would
+void remove_temporary_files_on_signals();
 
 } // namespace cgal_subdiv
 

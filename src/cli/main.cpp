@@ -4,12 +4,15 @@
 // cgal-subdiv: subdivision curves from the command line.
 #include "commands.h"
 #include "common.h"
+#include "files.h"
 
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/exceptions.h>
 
 #include <exception>
 #include <iostream>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -77,15 +80,26 @@ int dispatch(const std::vector<std::string>& args, const std::string& program)
 
 int main(int argc, char** argv)
 {
+  cgal_subdiv::remove_temporary_files_on_signals();
   try {
     return dispatch(std::vector<std::string>(argv + 1, argv + argc), argc > 0 ? argv[0] : "cgal-subdiv");
   } catch(const cgal_subdiv::Usage_error& e) {
     return fail(e.what(), 2);
-  } catch(const std::bad_alloc&) {
-    return fail("out of memory", 1);
-  } catch(const std::exception& e) {
+  } catch(const cgal_subdiv::Input_error& e) {
     return fail(e.what(), 1);
+  } catch(const CGAL::Subdiv::Bad_input& e) {
+    return fail(e.what(), 1);
+  } catch(const std::bad_alloc&) {
+    return fail("out of memory (a smaller --levels, or --max-memory to be refused before the work)", 1);
+  } catch(const std::length_error&) { // the C++ library's text ("vector::_M_default_append") says nothing
+    return fail("out of memory: a size beyond what this machine can hold", 1);
+  } catch(const CGAL::Failure_exception& e) { // a CGAL assertion: a bug, ours or CGAL's
+    return fail("internal error, please report it with the command and the input: CGAL says " + e.message() + " (" +
+                  e.expression() + ", " + e.filename() + ":" + std::to_string(e.line_number()) + ")",
+                1);
+  } catch(const std::exception&) {
+    return fail("internal error, please report it with the command and the input", 1);
   } catch(...) {
-    return fail("unexpected failure", 1);
+    return fail("internal error, please report it with the command and the input", 1);
   }
 }

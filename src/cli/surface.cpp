@@ -2,11 +2,7 @@
 // Copyright (c) 2026 CGAL Subdiv contributors
 #include "surface.h"
 #include "files.h"
-#include "mesh_soup.h"
 
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
@@ -14,23 +10,22 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <map>
-#include <numeric>
-#include <set>
+#include <limits>
 #include <sstream>
-#include <utility>
 
 namespace cgal_subdiv {
 namespace {
 
 namespace fs = std::filesystem;
-using Point = Double_kernel::Point_3;
+using Point_3 = Double_kernel::Point_3;
 
 // CGAL's writers may talk on std::cerr; keep it off the one-line error rule
 class Captured_cerr
@@ -45,92 +40,6 @@ private:
   std::ostringstream m_buffer;
   std::streambuf* m_old;
 };
-
-std::string point_text(const Point& p)
-{
-  std::ostringstream out;
-  out.precision(10);
-  out << '(' << p.x() << ' ' << p.y() << ' ' << p.z() << ')';
-  return out.str();
-}
-
-using Polygon = std::vector<std::size_t>;
-
-/*
- * Why a polygon soup is not a manifold polygon mesh, naming the first face,
- * edge or vertex at fault: vertex v by its number in the file
- * (`file_numbers[v]`, if there is one) and its coordinates.
- * Empty if nothing was found.
- */
-std::string soup_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
-                         const std::vector<std::size_t>& file_numbers)
-{
-  // "vertex 7 (0 1 0)": the number the file gives it, if known, and its point
-  const auto name = [&](std::size_t v) {
-    return "vertex " + (v < file_numbers.size() ? std::to_string(file_numbers[v]) + " " : std::string()) +
-           point_text(points[v]);
-  };
-  for(std::size_t f = 0; f < polygons.size(); ++f) {
-    const Polygon& poly = polygons[f]; // its size and indices checked by the reader
-    Polygon sorted = poly;
-    std::sort(sorted.begin(), sorted.end());
-    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
-    if(twice != sorted.end())
-      return "face " + std::to_string(f) + " passes twice through " + name(*twice);
-  }
-  // edges: how many faces use each, and in which direction
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> directed;
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> undirected;
-  for(std::size_t f = 0; f < polygons.size(); ++f) {
-    const Polygon& poly = polygons[f];
-    for(std::size_t k = 0; k < poly.size(); ++k) {
-      const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
-      directed[{a, b}].push_back(f);
-      ++undirected[{std::min(a, b), std::max(a, b)}];
-    }
-  }
-  for(const auto& [edge, count] : undirected)
-    if(count > 2)
-      return "the edge from " + name(edge.first) + " to " + name(edge.second) + " belongs to " + std::to_string(count) +
-             " faces";
-  for(const auto& [edge, faces] : directed)
-    if(faces.size() > 1)
-      return "faces " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) +
-             " are not consistently oriented (both run from " + name(edge.first) + " to " + name(edge.second) + ")";
-  // vertices: the corners around a vertex must form one fan (corners that
-  // share an edge at the vertex are joined)
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> corners(points.size()); // (prev, next)
-  for(const Polygon& poly : polygons)
-    for(std::size_t k = 0; k < poly.size(); ++k)
-      corners[poly[k]].push_back({poly[(k + poly.size() - 1) % poly.size()], poly[(k + 1) % poly.size()]});
-  for(std::size_t v = 0; v < points.size(); ++v) {
-    const auto& around = corners[v];
-    if(around.empty())
-      continue;
-    std::vector<std::size_t> parent(around.size());
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    const auto root = [&](std::size_t i) {
-      while(parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    std::map<std::size_t, std::size_t> by_neighbour;
-    for(std::size_t c = 0; c < around.size(); ++c)
-      for(std::size_t w : {around[c].first, around[c].second}) {
-        const auto found = by_neighbour.find(w);
-        if(found == by_neighbour.end())
-          by_neighbour[w] = c;
-        else
-          parent[root(c)] = root(found->second);
-      }
-    std::set<std::size_t> fans;
-    for(std::size_t c = 0; c < around.size(); ++c)
-      fans.insert(root(c));
-    if(fans.size() > 1)
-      return name(v) + " is non-manifold (its faces form " + std::to_string(fans.size()) + " separate fans)";
-  }
-  return "";
-}
 
 std::string lower(std::string s)
 {
@@ -187,80 +96,134 @@ std::string describe(const Mesh_counts& c)
   return std::to_string(c.vertices) + " V, " + std::to_string(c.edges) + " E, " + std::to_string(c.faces) + " F";
 }
 
+Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+                     std::vector<std::size_t>* file_numbers)
+{
+  const Mesh_format format = mesh_format(path, "INPUT");
+  // every index in range, every coordinate finite, before CGAL sees anything
+  return surface_from_soup(read_mesh_soup(path, format), path, format, repair, notes, file_numbers);
+}
+
+Largest_coordinate largest_coordinate(const Surface& mesh)
+{
+  Largest_coordinate largest;
+  for(const Surface::Vertex_index v : mesh.vertices())
+    for(int i = 0; i < 3; ++i)
+      if(std::abs(mesh.point(v)[i]) > std::abs(largest.value)) {
+        largest.vertex = v;
+        largest.value = mesh.point(v)[i];
+      }
+  return largest;
+}
+
+void check_finite_result(const Surface& result, const std::string& what, const std::string& input,
+                         const Largest_coordinate& largest, const std::vector<std::size_t>& file_numbers)
+{
+  for(const Surface::Vertex_index v : result.vertices()) {
+    const auto& p = result.point(v);
+    if(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
+      continue;
+    std::ostringstream value;
+    value.precision(6);
+    value << largest.value;
+    const std::string at = largest.vertex < file_numbers.size()
+                             ? "vertex " + std::to_string(file_numbers[largest.vertex])
+                             : "vertex " + std::to_string(largest.vertex) + " of the mesh read";
+    throw Input_error(what + " on '" + input + "' gives a non-finite coordinate (output vertex " +
+                      std::to_string(static_cast<std::size_t>(v)) + "): the coordinates of '" + input +
+                      "' are too large for the scheme's weights (the largest, " + value.str() + ", is at " + at +
+                      "); scale the mesh down. Nothing was written");
+  }
+}
+
 namespace {
 
-// the soup in CGAL's form, without the vertices that no face uses (with a
-// note: OpenSubdiv accepts them, and they play no part in any scheme)
-void to_cgal_soup(const Mesh_soup& soup, const std::string& path, std::size_t first_number, std::vector<Point>& points,
-                  std::vector<Polygon>& polygons, std::vector<std::size_t>& file_numbers,
-                  std::vector<std::string>& notes)
+// The unit normal of triangle (a, b, c), computed on the sides scaled by their
+// largest coordinate so that it is finite for any finite points (CGAL's STL
+// writer squares the sides: 1e200 gave "facet normal 0 0 -nan"); zero for a
+// degenerate triangle.
+std::array<double, 3> unit_normal(const Point_3& a, const Point_3& b, const Point_3& c)
 {
-  constexpr std::size_t unused = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> new_index(soup.points.size(), unused);
-  for(std::size_t i : soup.indices)
-    new_index[i] = 0;
-  std::size_t kept = 0;
-  for(std::size_t v = 0; v < soup.points.size(); ++v)
-    if(new_index[v] != unused) {
-      new_index[v] = kept++;
-      file_numbers.push_back(first_number + v);
-      const auto& p = soup.points[v];
-      points.emplace_back(p[0], p[1], p[2]);
+  double scale = 0;
+  for(int i = 0; i < 3; ++i)
+    scale = std::max({scale, std::abs(b[i] - a[i]), std::abs(c[i] - a[i])});
+  if(!(scale > 0) || !std::isfinite(scale))
+    return {0, 0, 0};
+  const double u[3] = {(b[0] - a[0]) / scale, (b[1] - a[1]) / scale, (b[2] - a[2]) / scale};
+  const double v[3] = {(c[0] - a[0]) / scale, (c[1] - a[1]) / scale, (c[2] - a[2]) / scale};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if(!(length > 0))
+    return {0, 0, 0};
+  return {n[0] / length, n[1] / length, n[2] / length};
+}
+
+void put_float_le(std::ostream& out, double value)
+{
+  const float f = static_cast<float>(value);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  const char bytes[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff),
+                         static_cast<char>((bits >> 16) & 0xff), static_cast<char>((bits >> 24) & 0xff)};
+  out.write(bytes, 4);
+}
+
+// STL, ASCII or binary (32-bit floats: a coordinate beyond the float range is
+// refused, not written as inf), of a triangle mesh
+void write_stl(const Surface& triangles, std::ostream& out, bool binary, const std::string& path)
+{
+  if(binary) {
+    const std::string header = "cgal-subdiv binary STL";
+    std::string head(80, ' ');
+    head.replace(0, header.size(), header);
+    out.write(head.data(), 80);
+    const std::uint32_t count = static_cast<std::uint32_t>(triangles.number_of_faces());
+    const char bytes[4] = {static_cast<char>(count & 0xff), static_cast<char>((count >> 8) & 0xff),
+                           static_cast<char>((count >> 16) & 0xff), static_cast<char>((count >> 24) & 0xff)};
+    out.write(bytes, 4);
+  } else {
+    out.precision(17);
+    out << "solid cgal-subdiv\n";
+  }
+  for(const Surface::Face_index f : triangles.faces()) {
+    std::array<Point_3, 3> p;
+    int k = 0;
+    for(const Surface::Vertex_index v : CGAL::vertices_around_face(triangles.halfedge(f), triangles))
+      p[static_cast<std::size_t>(k++)] = triangles.point(v);
+    const std::array<double, 3> n = unit_normal(p[0], p[1], p[2]);
+    if(binary) {
+      for(double x : n)
+        put_float_le(out, x);
+      for(const Point_3& q : p)
+        for(int i = 0; i < 3; ++i) {
+          if(std::abs(q[i]) > std::numeric_limits<float>::max())
+            throw Input_error("cannot write '" + path + "' as binary STL: the coordinate " + std::to_string(q[i]) +
+                              " does not fit in its 32-bit floats (write ASCII STL, or PLY)");
+          put_float_le(out, q[i]);
+        }
+      out.write("\0\0", 2);
+    } else {
+      out << "facet normal " << n[0] << ' ' << n[1] << ' ' << n[2] << "\n outer loop\n";
+      for(const Point_3& q : p)
+        out << "  vertex " << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+      out << " endloop\nendfacet\n";
     }
-  if(kept < soup.points.size())
-    notes.push_back("dropped the " + std::to_string(soup.points.size() - kept) + " vertices of '" + path +
-                    "' that no face uses (of " + std::to_string(soup.points.size()) + ")");
-  polygons.resize(soup.number_of_faces());
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t k = soup.face_starts[f]; k < soup.face_starts[f + 1]; ++k)
-      polygons[f].push_back(new_index[soup.indices[k]]);
+  }
+  if(!binary)
+    out << "endsolid cgal-subdiv\n";
 }
 
 } // namespace
 
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes)
-{
-  const Mesh_format format = mesh_format(path, "INPUT");
-  // every index in range, every coordinate finite, before CGAL sees anything
-  const Mesh_soup soup = read_mesh_soup(path, format);
-  notes.insert(notes.end(), soup.notes.begin(), soup.notes.end());
-  if(!soup.tags.empty())
-    notes.push_back("ignored " + std::to_string(soup.tags.size()) +
-                    (soup.tags.size() == 1 ? " tag line" : " tag lines") + " (t) of '" + path +
-                    "': creases, corners and holes are not supported yet, the surface is refined smooth");
-  if(soup.number_of_faces() == 0)
-    throw Input_error("'" + path + "' holds no faces");
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-  std::vector<std::size_t> file_numbers; // of the vertices kept (OBJ counts from 1)
-  to_cgal_soup(soup, path, format == Mesh_format::obj ? 1 : 0, points, polygons, file_numbers, notes);
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  if(repair) {
-    PMP::repair_polygon_soup(points, polygons);
-    PMP::orient_polygon_soup(points, polygons);
-    file_numbers.clear(); // the repair merges and splits vertices
-    if(polygons.empty())
-      throw Input_error("'" + path + "' holds no faces once repaired (every face was degenerate)");
-  }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
-    const std::string problem = soup_problem(points, polygons, file_numbers);
-    throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
-                      (repair ? "" : " (--repair makes one of it)"));
-  }
-  Surface mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(repair)
-    notes.push_back("read '" + path + "' as a repaired, oriented polygon soup: " + describe(counts(mesh)));
-  return mesh;
-}
-
-void write_surface(const Surface& mesh, const std::string& path)
+void write_surface(const Surface& mesh, const std::string& path, bool binary)
 {
   const Mesh_format format = mesh_format(path, "OUTPUT");
+  if(binary && format != Mesh_format::ply && format != Mesh_format::stl)
+    throw Usage_error("--binary writes PLY and STL only; OUTPUT '" + path + "' is " + mesh_format_name(format));
   Atomic_file file(path);
   std::ostream& out = file.stream();
   const auto np = CGAL::parameters::stream_precision(17);
-  bool ok = false;
+  bool ok = true;
   {
     Captured_cerr quiet;
     switch(format) {
@@ -271,16 +234,18 @@ void write_surface(const Surface& mesh, const std::string& path)
         ok = CGAL::IO::write_OBJ(out, mesh, np);
         break;
       case Mesh_format::ply:
+        if(binary)
+          CGAL::IO::set_binary_mode(out);
         ok = CGAL::IO::write_PLY(out, mesh, np);
         break;
       case Mesh_format::stl:
         // STL holds triangles only: split the faces of a copy
         if(CGAL::is_triangle_mesh(mesh)) {
-          ok = CGAL::IO::write_STL(out, mesh, np);
+          write_stl(mesh, out, binary, path);
         } else {
           Surface triangles = mesh;
           CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
-          ok = CGAL::IO::write_STL(out, triangles, np);
+          write_stl(triangles, out, binary, path);
         }
         break;
     }

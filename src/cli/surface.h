@@ -8,6 +8,7 @@
 
 #include "common.h"
 #include "mesh_soup.h"
+#include "surface_from_soup.h"
 
 #include <CGAL/Surface_mesh.h>
 
@@ -17,8 +18,6 @@
 #include <vector>
 
 namespace cgal_subdiv {
-
-using Surface = CGAL::Surface_mesh<Double_kernel::Point_3>;
 
 /// One surface scheme of `cgal-subdiv surface --scheme NAME`.
 struct Surface_scheme
@@ -75,11 +74,33 @@ std::string describe(const Mesh_counts& counts);
  *         readable, malformed (naming the line or byte), not a manifold
  *         polygon mesh (naming a face, an edge or a vertex), no faces
  */
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes);
+Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+                     std::vector<std::size_t>* file_numbers = nullptr);
 
-/// writes `mesh` to `path` (format from the extension), ASCII, 17 significant
-/// digits, under a temporary name renamed at the end; \throws Input_error
-void write_surface(const Surface& mesh, const std::string& path);
+/// the largest coordinate (in magnitude) of a mesh, and where it is
+struct Largest_coordinate
+{
+  std::size_t vertex = 0; // the vertex index in the mesh
+  double value = 0;
+};
+Largest_coordinate largest_coordinate(const Surface& mesh);
+
+/*
+ * refuses a result with a non-finite coordinate: names the input (`input`,
+ * its largest coordinate `largest`, at the vertex the file numbers
+ * `file_numbers[largest.vertex]` if known) as the likely cause, since every
+ * scheme's weights are bounded and only coordinates near the largest double
+ * overflow. `what` names the step ("loop, 3 levels").
+ * \throws Input_error
+ */
+void check_finite_result(const Surface& result, const std::string& what, const std::string& input,
+                         const Largest_coordinate& largest, const std::vector<std::size_t>& file_numbers);
+
+/// writes `mesh` to `path` (format from the extension), ASCII with 17
+/// significant digits or, with `binary`, binary PLY or STL (STL's 32-bit
+/// floats), under a temporary name renamed at the end;
+/// \throws Input_error, or Usage_error for `binary` with OFF or OBJ
+void write_surface(const Surface& mesh, const std::string& path, bool binary = false);
 
 /// one line of progress: level (1-based), mesh after it, seconds since start
 using Level_callback = std::function<void(int level, const Mesh_counts& counts, double seconds)>;

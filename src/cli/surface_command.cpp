@@ -18,7 +18,7 @@ namespace {
 
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
                            [--displace HEIGHTS] [--repair] [--max-memory SIZE]
-                           [--verbose]
+                           [--binary] [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -36,6 +36,8 @@ writing not included).
                         are split into triangles there. Written to a temporary
                         file and renamed at the end: a failed run leaves no
                         OUTPUT behind.
+  --binary              write binary PLY or STL (for big outputs; STL's
+                        32-bit floats round the coordinates)
   --scheme SCHEME       the scheme:
 )";
 
@@ -71,9 +73,9 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 )";
 
 const std::vector<Option_spec> surface_options = {
-  {{"-o", "--output"}, true},   {{"--scheme"}, true},      {{"--levels"}, true},
-  {{"--repair"}, false},        {{"--limit"}, false},      {{"--displace"}, true},
-  {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false}, {{"--max-memory"}, true}};
+  {{"-o", "--output"}, true}, {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
+  {{"--limit"}, false},       {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false},
+  {{"--max-memory"}, true},   {{"--binary"}, false}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -145,7 +147,10 @@ int surface_command(const std::vector<std::string>& arguments)
   const std::string input = args.positional.front();
   const std::string output = args.value("-o");
   mesh_format(input, "INPUT");
-  mesh_format(output, "OUTPUT");
+  const Mesh_format output_format = mesh_format(output, "OUTPUT");
+  if(args.has("--binary") && output_format != Mesh_format::ply && output_format != Mesh_format::stl)
+    throw Usage_error("--binary writes PLY and STL only; OUTPUT '" + output + "' is " +
+                      mesh_format_name(output_format));
   const int levels = args.integer("--levels", 0);
   if(levels < 0)
     throw Input_error("the number of levels must not be negative, got " + std::to_string(levels));
@@ -155,7 +160,9 @@ int surface_command(const std::vector<std::string>& arguments)
   const bool displace = args.has("--displace");
 
   std::vector<std::string> notes;
-  Surface mesh = read_surface(input, args.has("--repair"), notes);
+  std::vector<std::size_t> file_numbers;
+  Surface mesh = read_surface(input, args.has("--repair"), notes, &file_numbers);
+  const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();
   // progress: every level with --verbose, otherwise once the run is long
@@ -181,9 +188,14 @@ int surface_command(const std::vector<std::string>& arguments)
       result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }
+  const std::string step = scheme.name + ", " + std::to_string(levels) + (levels == 1 ? " level" : " levels") +
+                           (displace              ? " and --displace"
+                            : args.has("--limit") ? " and --limit"
+                                                  : "");
+  check_finite_result(mesh, step, input, largest, file_numbers);
   if(talking)
     std::cerr << "cgal-subdiv: writing " << output << std::endl;
-  write_surface(mesh, output);
+  write_surface(mesh, output, args.has("--binary"));
 
   for(const std::string& note : notes)
     std::cerr << "cgal-subdiv: note: " << note << '\n';

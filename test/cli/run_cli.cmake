@@ -17,6 +17,7 @@
 #   VERTICES, FACES  counts of the mesh in OUTPUT, from its header (OFF, PLY)
 #                  or its lines (OBJ: "v", "f"; STL: facets, no VERTICES)
 #   FILE, FILE_REGEX        a further file and a regular expression it must match
+#   FILE_NOT_REGEX          a regular expression that FILE must not match
 cmake_minimum_required(VERSION 3.16)
 
 function(fail message)
@@ -166,5 +167,8 @@ if(FILE)
   file(READ "${FILE}" content)
   if(DEFINED FILE_REGEX AND NOT content MATCHES "${FILE_REGEX}")
     fail("${FILE} does not match '${FILE_REGEX}'")
+  endif()
+  if(DEFINED FILE_NOT_REGEX AND content MATCHES "${FILE_NOT_REGEX}")
+    fail("${FILE} matches '${FILE_NOT_REGEX}'")
   endif()
 endif()

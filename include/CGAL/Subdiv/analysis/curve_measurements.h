@@ -153,12 +153,23 @@ std::vector<double> discrete_curvature(const PointRange& points,
     const internal::Double_point& a = p[(i + n - 1) % n];
     const internal::Double_point& b = p[i];
     const internal::Double_point& c = p[(i + 1) % n];
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double v[3] = {c[0] - b[0], c[1] - b[1], c[2] - b[2]};
+    // the sides scaled by their largest coordinate, so that neither the
+    // products below overflow (coordinates near 1e200) nor underflow; the
+    // curvature scales back by 1 / scale
+    double scale = 0;
+    for(std::size_t k = 0; k < 3; ++k)
+      scale = (std::max)({scale, std::abs(b[k] - a[k]), std::abs(c[k] - b[k])});
+    if(!(scale > 0) || !std::isfinite(scale))
+      continue; // repeated points (no circle through them), or infinite ones
+    const internal::Double_point u = {(b[0] - a[0]) / scale, (b[1] - a[1]) / scale, (b[2] - a[2]) / scale};
+    const internal::Double_point v = {(c[0] - b[0]) / scale, (c[1] - b[1]) / scale, (c[2] - b[2]) / scale};
+    const internal::Double_point w = {u[0] + v[0], u[1] + v[1], u[2] + v[2]};
     const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     const double twice_area = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-    const double lengths = internal::distance(a, b) * internal::distance(b, c) * internal::distance(a, c);
-    curvature[i] = lengths > 0 ? 2 * twice_area / lengths : 0.0;
+    const internal::Double_point origin = {0, 0, 0};
+    const double lengths =
+      internal::distance(origin, u) * internal::distance(origin, v) * internal::distance(origin, w);
+    curvature[i] = lengths > 0 ? 2 * twice_area / lengths / scale : 0.0;
   }
   return curvature;
 }

@@ -13,6 +13,8 @@
 #include <CGAL/squared_distance_2.h>
 #include <CGAL/squared_distance_3.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -223,6 +225,38 @@ std::vector<Point> bezier_uniform(std::vector<Point> current, int degree, const 
   return current;
 }
 
+/*
+ * An upper bound, known before any work, on the points that the adaptive
+ * subdivision to `tolerance` makes: a control polygon whose second
+ * differences are at most M lies within i (d - i) M / 2 <= d^2 M / 8 of the
+ * point i/d of its chord, and each halving divides the second differences by
+ * 4, so a segment is flat after at most k = ceil(log4(d^2 M / (8 tolerance)))
+ * halvings: at most d 2^k points. In doubles (a bound, not a result).
+ */
+template <class Point>
+double bezier_points_bound(const std::vector<Point>& points, std::size_t segments, std::size_t d, double tolerance)
+{
+  double bound = 1;
+  for(std::size_t s = 0; s < segments; ++s) {
+    const std::vector<Point> segment = bezier_segment(points, s, d);
+    double most = 0; // the largest second difference, squared
+    for(std::size_t i = 0; i + 2 <= d; ++i) {
+      double squared = 0;
+      for(int c = 0; c < segment[i].dimension(); ++c) {
+        const double second = CGAL::to_double(segment[i + 2].cartesian(c)) -
+                              2 * CGAL::to_double(segment[i + 1].cartesian(c)) +
+                              CGAL::to_double(segment[i].cartesian(c));
+        squared += second * second;
+      }
+      most = (std::max)(most, squared);
+    }
+    const double deviation = static_cast<double>(d * d) * std::sqrt(most) / 8;
+    const double halvings = deviation > tolerance ? std::ceil(std::log(deviation / tolerance) / std::log(4.0)) : 0;
+    bound += static_cast<double>(d) * std::pow(2.0, halvings);
+  }
+  return bound;
+}
+
 // a segment is split at t = 1/2 until it is flat
 template <class Point>
 std::vector<Point> bezier_adaptive(const std::vector<Point>& points, int degree, const Point_FT<Point>& tolerance,
@@ -234,6 +268,12 @@ std::vector<Point> bezier_adaptive(const std::vector<Point>& points, int degree,
   const std::size_t d = static_cast<std::size_t>(degree);
   const std::size_t segments = bezier_segment_count(points, degree, p.closed);
   const FT squared_tolerance = tolerance * tolerance;
+  // refuse before any work a tolerance that may need too many points
+  const double bound = bezier_points_bound(points, segments, d, CGAL::to_double(tolerance));
+  require(bound <= static_cast<double>(p.max_output_points),
+          "the flatness tolerance may need up to " + std::to_string(std::llround((std::min)(bound, 1e18))) +
+            " points, more than the max_output_points limit (" + std::to_string(p.max_output_points) +
+            "): a bound from the control points, known before any work; take a larger tolerance");
 
   std::vector<Point> result;
   for(std::size_t s = 0; s < segments; ++s) {
