@@ -319,6 +319,11 @@ if(SUBDIV_SH)
                        PASS_REGULAR_EXPRESSION "nothing left behind")
 endif()
 
+# an interior vertex of valence 2 has no limit mask: the reason, not a crash
+subdiv_surface_error(surface_limit_valence_2 1
+  "project_to_limit \\(Catmull-Clark\\): vertex 0: an interior vertex of valence 2: the eigen-analysis covers valence 3 or more"
+  ARGS surface ${hostile}/pillow_valence_2.off ${mesh_out} --scheme catmull-clark --levels 0 --limit)
+
 # --- non-finite results are errors, nothing is written ---------------------------
 subdiv_surface_error(surface_non_finite_result 1
   "butterfly, 2 levels on '[^']*near_max_cube.off' gives a non-finite coordinate \\(output vertex [0-9]+\\): the coordinates of '[^']*near_max_cube.off' are too large for the scheme's weights \\(the largest, -1.7e\\+308, is at vertex 0\\); scale the mesh down. Nothing was written"

@@ -76,7 +76,10 @@ inline Patch build_patch(int face_size, bool face_centred, int n, bool border, i
   require(
     !(face_centred && border),
     "build_patch: the border neighbourhoods of face-centred (dual) schemes are made by refinement (analysis_patch)");
-  require(face_centred || border || n >= 3, "an interior vertex needs valence 3 or more, got " + std::to_string(n));
+  require(face_centred || border || n >= 3,
+          "an interior vertex of valence " + std::to_string(n) +
+            ": the eigen-analysis covers valence 3 or more (at valence 2 the two faces share both edges, and "
+            "refinement keeps the valence, so no level of it has an analysed neighbourhood; doc/limit.md)");
   require(!face_centred || n >= 3, "a face needs 3 or more corners, got " + std::to_string(n));
   const int sectors = n;
   const double angle = (border ? 3.14159265358979323846 : 2 * 3.14159265358979323846) / n;
