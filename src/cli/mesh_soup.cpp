@@ -452,6 +452,29 @@ void end_face(Mesh_soup& soup)
 // ---------------------------------------------------------------------------
 // OFF (Geomview): [ST][C][N][4][n]OFF [BINARY], counts, vertices, faces
 
+/*
+ * x y z of vertex `number` from the current line of `text` (OFF and OBJ
+ * vertex lines); what follows on the line is left for the caller to ignore,
+ * and `extra_values_line` gets the first line that has some (0: none yet).
+ */
+std::array<double, 3> read_point_on_line(Text_cursor& text, std::size_t number, std::size_t& extra_values_line)
+{
+  std::array<double, 3> p{};
+  for(int axis = 0; axis < 3; ++axis) {
+    const std::string_view token = text.token_on_line();
+    if(token.empty())
+      text.fail(numbered("vertex", number) + " has only " + count_of(axis, "coordinate", "coordinates") +
+                " (expected x y z)");
+    if(!parse_real(token, p[axis]))
+      text.fail(numbered("vertex", number) + ": expected a coordinate, found " + shown(token));
+    if(!std::isfinite(p[axis]))
+      text.fail(not_finite(numbered("vertex", number), clipped(token)));
+  }
+  if(!text.line_done() && extra_values_line == 0)
+    extra_values_line = text.line();
+  return p;
+}
+
 /// what the keyword of an OFF file says
 struct Off_keyword
 {
@@ -587,20 +610,7 @@ private:
   /// one vertex line: x y z, then whatever the keyword announced (ignored)
   void read_ascii_vertex(std::size_t v)
   {
-    std::array<double, 3> p{};
-    for(int axis = 0; axis < 3; ++axis) {
-      const std::string_view token = m_text.token_on_line();
-      if(token.empty())
-        m_text.fail(numbered("vertex", v) + " has only " + count_of(axis, "coordinate", "coordinates") +
-                    " (expected x y z)");
-      if(!parse_real(token, p[axis]))
-        m_text.fail(numbered("vertex", v) + ": expected a coordinate, found " + shown(token));
-      if(!std::isfinite(p[axis]))
-        m_text.fail(not_finite(numbered("vertex", v), clipped(token)));
-    }
-    if(!m_text.line_done() && m_extra_vertex_values_line == 0)
-      m_extra_vertex_values_line = m_text.line();
-    m_soup.points.push_back(p);
+    m_soup.points.push_back(read_point_on_line(m_text, v, m_extra_vertex_values_line));
   }
 
   void read_ascii_faces()
@@ -847,20 +857,7 @@ private:
     if(m_soup.points.size() == max_vertices)
       m_text.fail("more than " + std::to_string(max_vertices) +
                   " vertices are not supported (the meshes use 32-bit indices)");
-    std::array<double, 3> p{};
-    for(int axis = 0; axis < 3; ++axis) {
-      const std::string_view token = m_text.token_on_line();
-      if(token.empty())
-        m_text.fail(numbered("vertex", number) + " has only " + count_of(axis, "coordinate", "coordinates") +
-                    " (expected x y z)");
-      if(!parse_real(token, p[axis]))
-        m_text.fail(numbered("vertex", number) + ": expected a coordinate, found " + shown(token));
-      if(!std::isfinite(p[axis]))
-        m_text.fail(not_finite(numbered("vertex", number), clipped(token)));
-    }
-    if(!m_text.line_done() && m_extra_vertex_values_line == 0)
-      m_extra_vertex_values_line = m_text.line();
-    m_soup.points.push_back(p);
+    m_soup.points.push_back(read_point_on_line(m_text, number, m_extra_vertex_values_line));
   }
 
   void read_face()

@@ -158,14 +158,19 @@ std::array<double, 3> unit_normal(const Point_3& a, const Point_3& b, const Poin
   return {n[0] / length, n[1] / length, n[2] / length};
 }
 
+void put_uint32_le(std::ostream& out, std::uint32_t bits)
+{
+  const char bytes[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff),
+                         static_cast<char>((bits >> 16) & 0xff), static_cast<char>((bits >> 24) & 0xff)};
+  out.write(bytes, 4);
+}
+
 void put_float_le(std::ostream& out, double value)
 {
   const float f = static_cast<float>(value);
   std::uint32_t bits;
   std::memcpy(&bits, &f, sizeof bits);
-  const char bytes[4] = {static_cast<char>(bits & 0xff), static_cast<char>((bits >> 8) & 0xff),
-                         static_cast<char>((bits >> 16) & 0xff), static_cast<char>((bits >> 24) & 0xff)};
-  out.write(bytes, 4);
+  put_uint32_le(out, bits);
 }
 
 // STL, ASCII or binary (32-bit floats: a coordinate beyond the float range is
@@ -177,10 +182,7 @@ void write_stl(const Surface& triangles, std::ostream& out, bool binary, const s
     std::string head(80, ' ');
     head.replace(0, header.size(), header);
     out.write(head.data(), 80);
-    const std::uint32_t count = static_cast<std::uint32_t>(triangles.number_of_faces());
-    const char bytes[4] = {static_cast<char>(count & 0xff), static_cast<char>((count >> 8) & 0xff),
-                           static_cast<char>((count >> 16) & 0xff), static_cast<char>((count >> 24) & 0xff)};
-    out.write(bytes, 4);
+    put_uint32_le(out, static_cast<std::uint32_t>(triangles.number_of_faces()));
   } else {
     out.precision(17);
     out << "solid cgal-subdiv\n";
