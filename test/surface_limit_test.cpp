@@ -165,6 +165,34 @@ TEST(LimitMasks, come_from_the_analysis)
   EXPECT_FALSE(butterfly.masks(3, false).tangents);
 }
 
+// above valence max_exact_limit_valence, in doubles, the masks come from the
+// double spectrum alone (the pole shapes of OpenSubdiv: valence 64 took 8 s,
+// 360 did not finish): still the closed forms, to double precision, and the
+// tangents stand
+TEST(LimitMasks, high_valence_in_doubles_keeps_the_closed_forms)
+{
+  ASSERT_EQ(SD::internal::max_exact_limit_valence, 24);
+  const auto cc = SD::Limit_evaluator<SD::Catmull_clark_mask<Mesh, double>>();
+  for(int n : {25, 64, 200}) {
+    const SD::Limit_masks& m = cc.masks(n, false);
+    ASSERT_EQ(m.limit.size(), static_cast<std::size_t>(2 * n + 1));
+    const double d = n * (n + 5.0);
+    EXPECT_NEAR(CGAL::to_double(m.limit[0]), n * n / d, 1e-13) << n;
+    for(int i = 1; i <= 2 * n; ++i)
+      EXPECT_NEAR(CGAL::to_double(m.limit[static_cast<std::size_t>(i)]), (i % 2 == 1 ? 4 : 1) / d, 1e-13) << n;
+    EXPECT_TRUE(m.tangents) << n;
+  }
+  const auto warren = SD::Limit_evaluator<Warren_loop<Mesh, double>>();
+  for(int n : {25, 64, 360}) {
+    const SD::Limit_masks& m = warren.masks(n, false);
+    ASSERT_EQ(m.limit.size(), static_cast<std::size_t>(n + 1));
+    EXPECT_NEAR(CGAL::to_double(m.limit[0]), 0.5, 1e-13) << n;
+    for(int i = 1; i <= n; ++i)
+      EXPECT_NEAR(CGAL::to_double(m.limit[static_cast<std::size_t>(i)]), 0.5 / n, 1e-13) << n;
+    EXPECT_TRUE(m.tangents) << n;
+  }
+}
+
 // ------------------------------------------------------------------ limit positions
 
 // after L more levels an old vertex is within |lambda_1|^L (times the size of

@@ -48,6 +48,8 @@ struct rings_t
 {};
 struct max_memory_t
 {};
+struct extended_spectrum_t
+{};
 
 } // namespace internal
 
@@ -84,6 +86,9 @@ using CGAL::parameters::is_default_parameter;
  *    flat (instead of a fixed depth);
  *  - characteristic_map: analysis, test the characteristic map, the costliest
  *    part (default true);
+ *  - extended_spectrum: analysis, the spectrum of the extended neighbourhood
+ *    and the characteristic map (default true; false: the spectrum and the
+ *    masks only, and no C1 verdict);
  *  - verify_limit: analysis, subdivide a random neighbourhood and compare its
  *    limit with the limit mask (default true);
  *  - max_faces: analysis, the characteristic-map and verification meshes stop
@@ -115,7 +120,8 @@ using CGAL::parameters::is_default_parameter;
   X(max_faces, internal::max_faces_t)                                \
   X(seed, internal::seed_t)                                          \
   X(rings, internal::rings_t)                                        \
-  X(max_memory, internal::max_memory_t)
+  X(max_memory, internal::max_memory_t)                              \
+  X(extended_spectrum, internal::extended_spectrum_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \

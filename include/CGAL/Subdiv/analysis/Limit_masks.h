@@ -21,6 +21,7 @@
 #include <complex>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -71,6 +72,18 @@ struct Limit_masks
 namespace internal {
 
 /*
+ * Above this valence, at interior vertices, a mesh with double coordinates
+ * takes masks computed in doubles: the limit mask is the double left fixed
+ * vector of the local matrix (relative error about 1e-14, held as the
+ * rationals of those doubles), and the tangent masks' C1 check is the
+ * spectrum's (a simple dominant 1, a real double subdominant eigenvalue, a
+ * gap) without the extended spectrum and the characteristic map, whose
+ * eigen-solve on about twice the rings took seconds at valence 64 and did not
+ * finish at 360. Exact kernels keep the exact masks at every valence.
+ */
+constexpr int max_exact_limit_valence = 24;
+
+/*
  * The masks of one configuration, from the analysis of `mask` (any mesh
  * type and number type: it is rebound): its tangent masks and verdict in
  * double (with the characteristic map, without the verification by
@@ -83,8 +96,11 @@ template <class Mask>
 Limit_masks compute_limit_masks(const Mask& mask, const Configuration& where)
 {
   using Traits = Host_of<decltype(mask.template rebind<Analysis_mesh, double>())>;
-  const Surface_analysis<double> analysis =
-    analyse_surface_scheme<double>(mask, where, parameters::characteristic_map(true).verify_limit(false));
+  // high valence in doubles: the masks from the double spectrum only
+  const bool in_double = std::is_floating_point<typename Mask::Number_type>::value && !Traits::face_centred &&
+                         where.valence > max_exact_limit_valence && !where.on_border();
+  const Surface_analysis<double> analysis = analyse_surface_scheme<double>(
+    mask, where, parameters::characteristic_map(true).verify_limit(false).extended_spectrum(!in_double));
   const int valence = where.valence;
   const bool border = where.on_border();
   Limit_masks masks;
@@ -101,11 +117,16 @@ Limit_masks compute_limit_masks(const Mask& mask, const Configuration& where)
                          : (Traits::face_centred ? " at a face with " + std::to_string(valence) + " corners"
                                                  : " at an interior vertex of valence " + std::to_string(valence)));
   require(analysis.one_is_simple_and_dominant, at + ": 1 is not a simple dominant eigenvalue, there is no limit mask");
-  const Local_subdivision_matrix<CGAL::Exact_rational> exact =
-    local_subdivision_matrix<CGAL::Exact_rational>(mask, where, parameters::rings(analysis.rings));
-  CGAL_assertion_msg(exact.invariant && exact.S.rows() == analysis.matrix.rows(),
-                     "the exact local matrix does not match the analysed one");
-  masks.limit = normalised_left_fixed_vector(exact.S);
+  if(in_double) {
+    for(const double w : analysis.limit_mask) // the double solve, held exactly
+      masks.limit.push_back(CGAL::Exact_rational(w));
+  } else {
+    const Local_subdivision_matrix<CGAL::Exact_rational> exact =
+      local_subdivision_matrix<CGAL::Exact_rational>(mask, where, parameters::rings(analysis.rings));
+    CGAL_assertion_msg(exact.invariant && exact.S.rows() == analysis.matrix.rows(),
+                       "the exact local matrix does not match the analysed one");
+    masks.limit = normalised_left_fixed_vector(exact.S);
+  }
   require(!masks.limit.empty(), at + ": the limit mask is not unique");
   if constexpr(Traits::face_centred) {
     // a dual scheme: the analysis is centred at an n-gon (labels 0..n-1 its
@@ -158,7 +179,10 @@ Limit_masks compute_limit_masks(const Mask& mask, const Configuration& where)
       }
     const double z = t[0][0] * t[1][1] - t[0][1] * t[1][0];
     const double scale = std::hypot(t[0][0], t[0][1]) * std::hypot(t[1][0], t[1][1]);
-    masks.tangents = analysis.c1 && std::abs(z) > 1e-8 * scale && scale > 0;
+    // in doubles at high valence there is no C1 verdict: the spectrum's C1
+    // conditions stand in for it (see max_exact_limit_valence)
+    const bool smooth = in_double ? analysis.c1_necessary : analysis.c1;
+    masks.tangents = smooth && std::abs(z) > 1e-8 * scale && scale > 0;
     if(z < 0)
       for(double& w : masks.tangent[1])
         w = -w;

@@ -335,6 +335,7 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
   const auto double_mask = any_mask.template rebind<Analysis_mesh, double>();
   using Traits = Host_of<std::decay_t<decltype(mask)>>;
   internal::Surface_analysis_options options;
+  options.extended_spectrum = choose_parameter(get_parameter(np, internal::extended_spectrum_t()), true);
   options.characteristic_map = choose_parameter(get_parameter(np, internal::characteristic_map_t()), true);
   options.verify_limit = choose_parameter(get_parameter(np, internal::verify_limit_t()), true);
   options.max_faces = choose_parameter(get_parameter(np, internal::max_faces_t()), options.max_faces);
@@ -435,7 +436,7 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
   }
 
   // 4.-6. extended spectrum, characteristic map, verdict
-  if(result.one_is_simple_and_dominant)
+  if(result.one_is_simple_and_dominant && options.extended_spectrum)
     internal::characteristic_map_and_extended_spectrum(double_mask, result, options);
   result.c1 = result.one_is_simple_and_dominant && result.c1_necessary && result.extended_spectrum_ok &&
               result.characteristic_map == Characteristic_map_verdict::regular_injective;
