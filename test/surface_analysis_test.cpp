@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -640,6 +642,66 @@ TEST(SurfaceAnalysisInterpolatingSqrt3, border_vertices)
       EXPECT_EQ(a.characteristic_map, Characteristic_map_verdict::not_injective);
     }
   }
+}
+
+// ------------------------------------------------- the spectrum by frequency
+
+// the sector blocks (used above valence 24) give what the dense solve gives:
+// the same sorted spectrum, the same exact fixed vector, the same canonical
+// tangent pair; a matrix whose sectors differ has no layout
+template <template <class, class> class Mask>
+void expect_sector_blocks_agree(int n)
+{
+  namespace S = CGAL::Subdiv;
+  namespace I = CGAL::Subdiv::internal;
+  const auto local = local_matrix<Mask>(n);
+  const std::optional<I::Sector_layout> layout = I::sector_layout(local.S, local.ring, n);
+  ASSERT_TRUE(layout) << n;
+  EXPECT_EQ(layout->sectors, n);
+  const Eigen::MatrixXd D = I::to_double_matrix(local.S);
+  const std::vector<std::complex<double>> dense = I::sorted_eigenvalues(D);
+  const I::Sector_spectrum blocks = I::sector_spectrum(D, *layout);
+  ASSERT_EQ(blocks.eigenvalues.size(), dense.size()) << n;
+  for(std::size_t i = 0; i < dense.size(); ++i)
+    EXPECT_NEAR(std::abs(blocks.eigenvalues[i] - dense[i]), 0, 1e-9) << n << " eigenvalue " << i;
+  EXPECT_EQ(blocks.frequency[0], 0);
+  EXPECT_EQ(I::left_fixed_vector_over_sectors(local.S, *layout), I::normalised_left_fixed_vector(local.S)) << n;
+
+  Surface_analysis<FT> by_dense;
+  I::dense_tangent_pair(D, dense, by_dense);
+  const int j = blocks.frequency[1];
+  ASSERT_TRUE(j == 1 || j == n - 1) << n << ": the subdominant pair is the first frequency";
+  const Eigen::VectorXcd l = I::sector_left_eigenvector(D, *layout, j, blocks.eigenvalues[1]);
+  Eigen::VectorXd a = l.real(), b = l.imag();
+  I::canonical_pair(a, b);
+  ASSERT_EQ(by_dense.tangent_mask[0].size(), static_cast<std::size_t>(a.size()));
+  for(Eigen::Index i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i], by_dense.tangent_mask[0][static_cast<std::size_t>(i)], 1e-9) << n << " label " << i;
+    EXPECT_NEAR(b[i], by_dense.tangent_mask[1][static_cast<std::size_t>(i)], 1e-9) << n << " label " << i;
+  }
+
+  auto broken = local.S;
+  broken(1, 1) += FT(1) / FT(1024);
+  EXPECT_FALSE(I::sector_layout(broken, local.ring, n));
+}
+
+TEST(SurfaceAnalysis, sector_blocks_agree_with_the_dense_solve)
+{
+  for(int n : {3, 5, 8, 30}) {
+    expect_sector_blocks_agree<CGAL::Subdiv::Loop_mask>(n);
+    expect_sector_blocks_agree<CGAL::Subdiv::Catmull_clark_mask>(n);
+  }
+  for(int n : {5, 7})
+    expect_sector_blocks_agree<CGAL::Subdiv::Modified_butterfly_mask>(n);
+  // the analysis takes the blocks above valence 24: its masks are those of the dense solve
+  const auto a = analyse<CGAL::Subdiv::Catmull_clark_mask>(25);
+  ASSERT_EQ(a.limit_mask.size(), 51u);
+  EXPECT_EQ(a.limit_mask[0], FT(25 * 25) / FT(25 * 30));
+  EXPECT_EQ(a.limit_mask[1], FT(4) / FT(25 * 30));
+  EXPECT_EQ(a.limit_mask[2], FT(1) / FT(25 * 30));
+  const double c = std::cos(2 * pi / 25);
+  EXPECT_NEAR(a.subdominant.real(), (5 + c + std::cos(pi / 25) * std::sqrt(18 + 2 * c)) / 16, 1e-12);
+  EXPECT_EQ(a.tangent_mask[0].size(), 51u);
 }
 
 // ---------------------------------------------------------------- bad input

@@ -9,6 +9,7 @@
 
 #include <CGAL/Subdiv/analysis/Configuration.h>
 #include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
+#include <CGAL/Subdiv/analysis/sector_spectrum.h>
 #include <CGAL/Subdiv/analysis/surface_analysis.h>
 #include <CGAL/Subdiv/analysis/surface_neighbourhood.h>
 #include <CGAL/Subdiv/errors.h>
@@ -19,6 +20,7 @@
 
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <cstddef>
 #include <string>
 #include <type_traits>
@@ -79,7 +81,8 @@ namespace internal {
  * spectrum's (a simple dominant 1, a real double subdominant eigenvalue, a
  * gap) without the extended spectrum and the characteristic map, whose
  * eigen-solve on about twice the rings took seconds at valence 64 and did not
- * finish at 360. Exact kernels keep the exact masks at every valence.
+ * finish at 360. The spectrum and the masks are then taken by frequency
+ * (sector_spectrum.h). Exact kernels keep the exact masks at every valence.
  */
 constexpr int max_exact_limit_valence = 24;
 
@@ -125,7 +128,11 @@ Limit_masks compute_limit_masks(const Mask& mask, const Configuration& where)
       local_subdivision_matrix<CGAL::Exact_rational>(mask, where, parameters::rings(analysis.rings));
     CGAL_assertion_msg(exact.invariant && exact.S.rows() == analysis.matrix.rows(),
                        "the exact local matrix does not match the analysed one");
-    masks.limit = normalised_left_fixed_vector(exact.S);
+    // the analysis proved 1 simple: at an interior vertex with alike
+    // sectors, frequency 0 alone gives the fixed vector, exactly
+    const std::optional<Sector_layout> sectors =
+      border || Traits::face_centred ? std::nullopt : sector_layout(exact.S, exact.ring, valence);
+    masks.limit = sectors ? left_fixed_vector_over_sectors(exact.S, *sectors) : normalised_left_fixed_vector(exact.S);
   }
   require(!masks.limit.empty(), at + ": the limit mask is not unique");
   if constexpr(Traits::face_centred) {

@@ -13,6 +13,7 @@
 #include <CGAL/Subdiv/analysis/characteristic_map.h>
 #include <CGAL/Subdiv/analysis/curve_analysis.h>     // sort_eigenvalues, to_double_matrix
 #include <CGAL/Subdiv/analysis/curve_local_matrix.h> // exact ranks, left fixed vector
+#include <CGAL/Subdiv/analysis/sector_spectrum.h>
 #include <CGAL/Subdiv/analysis/surface_neighbourhood.h>
 #include <CGAL/Subdiv/analysis/verify_limit.h>
 #include <CGAL/Subdiv/errors.h>
@@ -33,6 +34,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -231,8 +233,41 @@ void confirm_rational_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen:
   }
 }
 
-// orthonormalises the pair and rotates it: the first gets the largest weight
-// possible on label 1, the second zero there, with a positive weight on label 2
+// the tangent masks from a dense left eigen-solve: the real and imaginary
+// parts of lambda_1's left eigenvector if it is complex, else the left
+// eigenvectors of lambda_1 and lambda_2; put in the canonical basis
+template <class FT>
+void dense_tangent_pair(const Eigen::MatrixXd& D, const std::vector<std::complex<double>>& ev,
+                        Surface_analysis<FT>& result)
+{
+  const Eigen::Index m = D.rows();
+  Eigen::EigenSolver<Eigen::MatrixXd> left(D.transpose(), true);
+  if(left.info() != Eigen::Success) {
+    result.status = Analysis_status::no_convergence;
+    return;
+  }
+  std::vector<Eigen::Index> near; // eigenvalues of the pair: lambda_1 first
+  for(const std::complex<double>& target : {ev[1], ev.size() > 2 ? ev[2] : ev[1]})
+    for(Eigen::Index i = 0; i < m; ++i)
+      if(std::abs(left.eigenvalues()[i] - target) < 1e-7 && std::find(near.begin(), near.end(), i) == near.end()) {
+        near.push_back(i);
+        break;
+      }
+  Eigen::VectorXd a, b;
+  if(std::abs(ev[1].imag()) > 1e-12 && !near.empty()) {
+    a = left.eigenvectors().col(near[0]).real();
+    b = left.eigenvectors().col(near[0]).imag();
+  } else if(near.size() >= 2) {
+    a = left.eigenvectors().col(near[0]).real();
+    b = left.eigenvectors().col(near[1]).real();
+  }
+  if(a.size() == m) {
+    canonical_pair(a, b);
+    result.tangent_mask[0].assign(a.data(), a.data() + m);
+    result.tangent_mask[1].assign(b.data(), b.data() + m);
+  }
+}
+
 } // namespace internal
 
 /*!
@@ -370,7 +405,17 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
   if(!result.rows_sum_to_one)
     result.status = Analysis_status::not_affine_invariant;
   const Eigen::MatrixXd D = internal::to_double_matrix(result.matrix);
-  result.eigenvalues = internal::sorted_eigenvalues(D);
+  // high valence: the spectrum by frequency, when the sectors are alike
+  const std::optional<internal::Sector_layout> sectors =
+    !boundary && !Traits::face_centred && valence > internal::max_dense_spectrum_valence
+      ? internal::sector_layout(result.matrix, result.ring, valence)
+      : std::nullopt;
+  internal::Sector_spectrum by_frequency;
+  if(sectors) {
+    by_frequency = internal::sector_spectrum(D, *sectors);
+    result.eigenvalues = by_frequency.eigenvalues;
+  } else
+    result.eigenvalues = internal::sorted_eigenvalues(D);
   if(result.eigenvalues.size() != static_cast<std::size_t>(D.rows())) { // the solver did not converge
     result.status = Analysis_status::no_convergence;
     return result;
@@ -406,33 +451,22 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
     result.c1_necessary = result.one_is_simple_and_dominant && real_pair && result.subdominant_multiplicity == 2 && gap;
 
   // 3. limit and tangent masks
-  result.limit_mask = internal::normalised_left_fixed_vector(result.matrix);
-  {
-    Eigen::EigenSolver<Eigen::MatrixXd> left(D.transpose(), true);
-    if(left.info() != Eigen::Success)
-      result.status = Analysis_status::no_convergence;
-    else {
-      std::vector<Eigen::Index> near; // eigenvalues of the pair: lambda_1 first
-      for(const std::complex<double>& target : {ev[1], ev.size() > 2 ? ev[2] : ev[1]})
-        for(Eigen::Index i = 0; i < m; ++i)
-          if(std::abs(left.eigenvalues()[i] - target) < 1e-7 && std::find(near.begin(), near.end(), i) == near.end()) {
-            near.push_back(i);
-            break;
-          }
-      Eigen::VectorXd a, b;
-      if(std::abs(ev[1].imag()) > 1e-12 && !near.empty()) {
-        a = left.eigenvectors().col(near[0]).real();
-        b = left.eigenvectors().col(near[0]).imag();
-      } else if(near.size() >= 2) {
-        a = left.eigenvectors().col(near[0]).real();
-        b = left.eigenvectors().col(near[1]).real();
-      }
-      if(a.size() == m) {
+  if(sectors) {
+    if(ones == 1)
+      result.limit_mask = internal::left_fixed_vector_over_sectors(result.matrix, *sectors);
+    const int j = by_frequency.frequency[1]; // the subdominant's
+    if(j != 0 && 2 * j != valence) {
+      const Eigen::VectorXcd l = internal::sector_left_eigenvector(D, *sectors, j, ev[1]);
+      if(l.size() == m) {
+        Eigen::VectorXd a = l.real(), b = l.imag();
         internal::canonical_pair(a, b);
         result.tangent_mask[0].assign(a.data(), a.data() + m);
         result.tangent_mask[1].assign(b.data(), b.data() + m);
       }
     }
+  } else {
+    result.limit_mask = internal::normalised_left_fixed_vector(result.matrix);
+    internal::dense_tangent_pair(D, ev, result);
   }
 
   // 4.-6. extended spectrum, characteristic map, verdict
