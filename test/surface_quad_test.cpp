@@ -18,6 +18,7 @@
 #include "mesh_test_utils.h"
 #include "opensubdiv_baselines.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
@@ -530,4 +531,87 @@ TEST(QuadSchemes, bad_input_is_refused_and_the_mesh_is_unchanged)
   const std::string doo_sabin_message = testing_utils::bad_input_message([&] { S::doo_sabin_subdivision(isolated); });
   EXPECT_NE(doo_sabin_message.find("Doo-Sabin: vertex 8 is isolated"), std::string::npos) << doo_sabin_message;
   EXPECT_EQ(num_faces(isolated), 6u);
+}
+
+// Isolated vertices, which OpenSubdiv accepts: dropped, or kept unrefined
+// after the refined vertices; the rest refines as if they were not there
+std::vector<K::Point_3> sorted_points(const Mesh& mesh)
+{
+  std::vector<K::Point_3> points;
+  for(auto v : vertices(mesh))
+    points.push_back(mesh.point(v));
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+template <class Subdivide>
+void expect_isolated_vertices_set_aside(const Mesh& clean, const Subdivide& subdivide_with)
+{
+  Mesh with_isolated;
+  with_isolated.add_vertex(K::Point_3(5, 5, 5)); // before the others: they are renumbered
+  CGAL::copy_face_graph(clean, with_isolated);
+  with_isolated.add_vertex(K::Point_3(-5, 4, 3));
+  Mesh expected = clean;
+  subdivide_with(expected, S::Isolated_vertices::refuse);
+
+  Mesh dropped = with_isolated;
+  subdivide_with(dropped, S::Isolated_vertices::drop);
+  EXPECT_EQ(num_faces(dropped), num_faces(expected));
+  EXPECT_EQ(num_vertices(dropped), num_vertices(expected));
+  // the same up to the order of the sums (the vertices are renumbered)
+  EXPECT_LT(position_mismatch(dropped, expected), 1e-15);
+
+  Mesh kept = with_isolated;
+  subdivide_with(kept, S::Isolated_vertices::keep);
+  ASSERT_EQ(num_vertices(kept), num_vertices(expected) + 2);
+  EXPECT_EQ(num_faces(kept), num_faces(expected));
+  const Mesh::Vertex_index first(static_cast<Mesh::size_type>(num_vertices(expected)));
+  const Mesh::Vertex_index second(static_cast<Mesh::size_type>(num_vertices(expected) + 1));
+  EXPECT_EQ(kept.point(first), K::Point_3(5, 5, 5));
+  EXPECT_EQ(kept.point(second), K::Point_3(-5, 4, 3));
+  EXPECT_TRUE(kept.is_isolated(first) && kept.is_isolated(second));
+  Mesh kept_faces = kept;
+  kept_faces.remove_vertex(first);
+  kept_faces.remove_vertex(second);
+  kept_faces.collect_garbage();
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(kept_faces));
+  EXPECT_LT(position_mismatch(kept_faces, expected), 1e-15);
+
+  // refused (the default, QuadSchemes.bad_input_is_refused_and_the_mesh_is_unchanged)
+  // with the parameter named; kept or dropped with carried data: refused
+  const Mesh copy = with_isolated;
+  const std::string refused = testing_utils::bad_input_message([&] { subdivide_with(with_isolated, S::Isolated_vertices::refuse); });
+  EXPECT_NE(refused.find("vertex 0 is isolated (it belongs to no face); the named parameter "
+                         "isolated_vertices(Isolated_vertices::keep)"),
+            std::string::npos)
+    << refused;
+  S::Carried_data<Mesh> data;
+  auto weight = with_isolated.add_property_map<Mesh::Vertex_index, double>("v:weight", 1.0).first;
+  data.vertex_map(weight);
+  const std::string carried = testing_utils::bad_input_message([&] {
+    S::subdivide(with_isolated, S::Catmull_clark_mask<Mesh>(),
+                 S::parameters::isolated_vertices(S::Isolated_vertices::keep).carried_data(data));
+  });
+  EXPECT_NE(carried.find("2 isolated vertices, and isolated_vertices(keep or drop) cannot be combined with "
+                         "carried_data yet"),
+            std::string::npos)
+    << carried;
+  EXPECT_EQ(num_vertices(with_isolated), num_vertices(copy));
+  EXPECT_EQ(sorted_points(with_isolated), sorted_points(copy));
+}
+
+TEST(QuadSchemes, isolated_vertices_are_dropped_or_kept_on_request)
+{
+  using Policy = S::Isolated_vertices;
+  const auto with = [](int levels, Policy policy) {
+    return S::parameters::number_of_iterations(levels).isolated_vertices(policy);
+  };
+  const Mesh cube = read_mesh("cgal/cube_quad.off");
+  expect_isolated_vertices_set_aside(
+    cube, [&](Mesh& m, const Policy& p) { S::catmull_clark_subdivision(m, with(2, p)); });
+  expect_isolated_vertices_set_aside(cube, [&](Mesh& m, const Policy& p) { S::doo_sabin_subdivision(m, with(1, p)); });
+  Mesh tetrahedron;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), tetrahedron));
+  expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::loop_subdivision(m, with(2, p)); });
+  expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::sqrt3_subdivision(m, with(2, p)); });
 }

@@ -50,8 +50,28 @@ struct max_memory_t
 {};
 struct extended_spectrum_t
 {};
+struct isolated_vertices_t
+{};
 
 } // namespace internal
+
+/*!
+ * \ingroup PkgSubdivFunctions
+ * What `subdivide()` does with a vertex that belongs to no face (OpenSubdiv
+ * accepts them; OBJ and PLY files often hold some).
+ */
+enum class Isolated_vertices
+{
+  /// a `Bad_input` that names the vertex (the default: a mesh with one is
+  /// often a broken mesh)
+  refuse,
+  /// removed before the refinement (the other vertices may be renumbered, as
+  /// `Surface_mesh::collect_garbage()` does)
+  drop,
+  /// kept where they are, unrefined, after the refined vertices (the limit of
+  /// a vertex in no face is the vertex)
+  keep
+};
 
 namespace parameters {
 
@@ -99,7 +119,9 @@ using CGAL::parameters::is_default_parameter;
  *    matrix (default: the smallest invariant one);
  *  - max_memory: surfaces, the memory (bytes) that the output may take
  *    (default this machine's): a level count whose output would take more
- *    is refused before any work.
+ *    is refused before any work;
+ *  - isolated_vertices: surfaces, what `subdivide()` does with vertices that
+ *    belong to no face (`Isolated_vertices`; default refuse).
  * Kept by reference (the chain holds a pointer to the argument):
  *  - carried_data: other vertex and face data to carry through the levels
  *    (`Carried_data`);
@@ -121,7 +143,8 @@ using CGAL::parameters::is_default_parameter;
   X(seed, internal::seed_t)                                          \
   X(rings, internal::rings_t)                                        \
   X(max_memory, internal::max_memory_t)                              \
-  X(extended_spectrum, internal::extended_spectrum_t)
+  X(extended_spectrum, internal::extended_spectrum_t)                \
+  X(isolated_vertices, internal::isolated_vertices_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \

@@ -6,6 +6,7 @@
 #include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/internal/isolated_vertices.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/parameters.h>
@@ -39,12 +40,15 @@ namespace Subdiv {
  *     the same stencils, face data inherited by child faces, origins;
  *   - `max_memory` (default this machine's memory, in bytes): a level count
  *     whose output would take more is refused before any work;
+ *   - `isolated_vertices` (an `Isolated_vertices`, default `refuse`): what
+ *     happens to vertices that belong to no face: refused, dropped, or kept
+ *     unrefined after the refined vertices (not with `carried_data`);
  *   - `threads` (default 1; 0: TBB's choice): how many threads refine a
  *     `Surface_mesh` (points with double coordinates; with TBB only); the
  *     result is the same bit for bit with any number.
  *
- * \throws Bad_input when the mesh does not suit the scheme (empty, isolated or
- * non-manifold vertices, non-finite coordinates, a face of the wrong size, a
+ * \throws Bad_input when the mesh does not suit the scheme (empty, isolated
+ * vertices unless `isolated_vertices` accepts them, non-manifold vertices, non-finite coordinates, a face of the wrong size, a
  * `Surface_mesh` that still holds removed elements: call `collect_garbage()`
  * first) or when the output would not fit in memory. The mesh is then unchanged.
  */
@@ -62,28 +66,40 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
                 "the mask's Number_type must be the number type of the points of the vertex point map");
   const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1);
 
-  internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
+  const Isolated_vertices isolated =
+    choose_parameter(get_parameter(np, internal::isolated_vertices_t()), Isolated_vertices::refuse);
+  internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated != Isolated_vertices::refuse);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
+
+  const Carried_data<PolygonMesh, typename Mask::Number_type>* data = nullptr;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
+    data = get_parameter(np, internal::carried_data_t());
+  const bool carried = data != nullptr && !data->empty();
+  // set aside before the refinement, put back after it (kept: unrefined)
+  const auto set_aside = isolated == Isolated_vertices::refuse
+                           ? internal::Isolated_points<VPM>()
+                           : internal::remove_isolated_vertices(mesh, vpm, mask.name(), carried);
 
   internal::reserve_levels<Host>(mesh, levels);
   // The carried path (rows recorded per level) is compiled only where
   // carried_data is passed: a plain program does not pay for it.
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
     using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
-    const Data* data = get_parameter(np, internal::carried_data_t());
-    if(data != nullptr && !data->empty()) {
+    if(carried) {
       for(int level = 0; level < levels; ++level) { // the points from the recorded stencils, as the data
-        typename Data::Level carried(*data, mesh);
-        const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried.stencils()};
-        internal::refine_level(mesh, mask, points, internal::Parallel_loop(1), carried);
+        typename Data::Level carried_level(*data, mesh);
+        const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried_level.stencils()};
+        internal::refine_level(mesh, mask, points, internal::Parallel_loop(1), carried_level);
       }
       return;
     }
   }
   for(int level = 0; level < levels; ++level)
     internal::refine_level(mesh, mask, internal::Mask_points<VPM>{vpm}, loop);
+  if(isolated == Isolated_vertices::keep)
+    internal::add_isolated_vertices(mesh, vpm, set_aside);
 }
 
 } // namespace Subdiv

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Subdiv {
@@ -142,8 +143,31 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
   throw Bad_input(scheme + ": " + element + " " + std::to_string(index) + " " + what);
 }
 
+// CGAL's validity, which refuses a vertex in no face: on a copy without them
+// if there are any (this is the error path: the fast checks failed)
+template <class Mesh>
+bool valid_without_isolated_vertices(const Mesh& mesh)
+{
+  for(auto v : vertices(mesh))
+    if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge()) {
+      Mesh faces_only(mesh);
+      for(auto w : std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>(vertices(faces_only).begin(),
+                                                                                       vertices(faces_only).end()))
+        if(halfedge(w, faces_only) == boost::graph_traits<Mesh>::null_halfedge())
+          CGAL::remove_vertex(w, faces_only);
+      return CGAL::is_valid_polygon_mesh(faces_only);
+    }
+  return CGAL::is_valid_polygon_mesh(mesh);
+}
+
+/*
+ * `allow_isolated`: a vertex in no face passes (the caller sets it aside,
+ * `Isolated_vertices`); otherwise it is refused, with the parameter that
+ * accepts it named.
+ */
 template <class Mesh, class VertexPointMap>
-void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size)
+void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size,
+                bool allow_isolated = false)
 {
   if(passes_mesh_checks(mesh, vpm, required_face_size))
     return;
@@ -167,10 +191,16 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
   // messages are built only on failure: this runs on every call
   std::size_t i = 0;
   for(auto v : vertices(mesh)) {
-    if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())
-      refuse_element(scheme, "vertex", i, "is isolated (it belongs to no face)");
     if(!is_finite_point(get(vpm, v)))
       refuse_element(scheme, "vertex", i, "has a non-finite coordinate");
+    if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge()) {
+      if(!allow_isolated)
+        refuse_element(scheme, "vertex", i,
+                       "is isolated (it belongs to no face); the named parameter "
+                       "isolated_vertices(Isolated_vertices::keep) or (Isolated_vertices::drop) accepts it");
+      ++i;
+      continue;
+    }
     if(CGAL::halfedges_around_target(v, mesh).size() != get(incoming, v) || get(incoming_border, v) > 1)
       refuse_element(scheme, "vertex", i, "is non-manifold (its faces do not form one fan)");
     ++i;
@@ -185,7 +215,7 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
                       " vertices; face " + std::to_string(i) + " has " + std::to_string(size));
     ++i;
   }
-  require(CGAL::is_valid_polygon_mesh(mesh), scheme + ": the mesh is not a valid polygon mesh");
+  require(valid_without_isolated_vertices(mesh), scheme + ": the mesh is not a valid polygon mesh");
 }
 
 /// "17.0 GB", "512 MB", "3 kB": a size for a message
