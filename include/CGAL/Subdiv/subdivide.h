@@ -66,9 +66,15 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
                 "the mask's Number_type must be the number type of the points of the vertex point map");
   const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1);
 
+  // setting isolated vertices aside is compiled only where the parameter is
+  // passed (collect_garbage() alone costs a plain program 0.3 s to compile)
+  constexpr bool may_set_aside = !parameters::is_default_parameter<NamedParameters, internal::isolated_vertices_t>::value;
   const Isolated_vertices isolated =
     choose_parameter(get_parameter(np, internal::isolated_vertices_t()), Isolated_vertices::refuse);
-  internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated != Isolated_vertices::refuse);
+  if constexpr(may_set_aside)
+    internal::check_mesh<true>(mesh, vpm, mask.name(), Host::required_face_size, isolated != Isolated_vertices::refuse);
+  else
+    internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
@@ -78,9 +84,10 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     data = get_parameter(np, internal::carried_data_t());
   const bool carried = data != nullptr && !data->empty();
   // set aside before the refinement, put back after it (kept: unrefined)
-  const auto set_aside = isolated == Isolated_vertices::refuse
-                           ? internal::Isolated_points<VPM>()
-                           : internal::remove_isolated_vertices(mesh, vpm, mask.name(), carried);
+  internal::Isolated_points<VPM> set_aside;
+  if constexpr(may_set_aside)
+    if(isolated != Isolated_vertices::refuse)
+      set_aside = internal::remove_isolated_vertices(mesh, vpm, mask.name(), carried);
 
   internal::reserve_levels<Host>(mesh, levels);
   // The carried path (rows recorded per level) is compiled only where
@@ -98,8 +105,9 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   }
   for(int level = 0; level < levels; ++level)
     internal::refine_level(mesh, mask, internal::Mask_points<VPM>{vpm}, loop);
-  if(isolated == Isolated_vertices::keep)
-    internal::add_isolated_vertices(mesh, vpm, set_aside);
+  if constexpr(may_set_aside)
+    if(isolated == Isolated_vertices::keep)
+      internal::add_isolated_vertices(mesh, vpm, set_aside);
 }
 
 } // namespace Subdiv

@@ -11,7 +11,6 @@
 #include <CGAL/Subdiv/errors.h>
 
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <boost/property_map/property_map.hpp>
 

@@ -45,7 +45,7 @@ bool has_garbage(const CGAL::Surface_mesh<Point>& mesh)
  * Surface_mesh without garbage, that is their index).
  */
 template <class Mesh, class VertexPointMap>
-bool passes_mesh_checks(const Mesh&, const VertexPointMap&, int)
+bool passes_mesh_checks(const Mesh&, const VertexPointMap&, int, bool)
 {
   return false;
 }
@@ -66,7 +66,8 @@ bool passes_mesh_checks(const Mesh&, const VertexPointMap&, int)
  *   is_valid_polygon_mesh's local conditions, halfedge by halfedge.
  */
 template <class P, class VertexPointMap>
-bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, int required_face_size)
+bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, int required_face_size,
+                        bool allow_isolated)
 {
   using SM = CGAL::Surface_mesh<P>;
   using size_type = typename SM::size_type;
@@ -100,6 +101,8 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
   for(std::size_t i = 0; i < nv; ++i) {
     const V v(static_cast<size_type>(i));
     const H h = mesh.halfedge(v);
+    if(h == SM::null_halfedge() && allow_isolated && is_finite_point(get(vpm, v)))
+      continue;
     if(std::size_t(h) >= nh || mesh.target(h) != v || !is_finite_point(get(vpm, v)))
       return false;
     std::size_t count = 0, border = 0;
@@ -143,6 +146,22 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
   throw Bad_input(scheme + ": " + element + " " + std::to_string(index) + " " + what);
 }
 
+[[noreturn]] inline void refuse_isolated(const std::string& scheme, std::size_t index)
+{
+  refuse_element(scheme, "vertex", index,
+                 "is isolated (it belongs to no face); the named parameter "
+                 "isolated_vertices(Isolated_vertices::keep) or (Isolated_vertices::drop) accepts it");
+}
+
+inline void check_face_size(const std::string& scheme, std::size_t index, std::size_t size, int required_face_size)
+{
+  if(size < 3)
+    refuse_element(scheme, "face", index, "has only " + std::to_string(size) + " vertices");
+  if(required_face_size != 0 && size != static_cast<std::size_t>(required_face_size))
+    throw Bad_input(scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) +
+                    " vertices; face " + std::to_string(index) + " has " + std::to_string(size));
+}
+
 // CGAL's validity, which refuses a vertex in no face: on a copy without them
 // if there are any (this is the error path: the fast checks failed)
 template <class Mesh>
@@ -161,15 +180,16 @@ bool valid_without_isolated_vertices(const Mesh& mesh)
 }
 
 /*
- * `allow_isolated`: a vertex in no face passes (the caller sets it aside,
+ * `allow_isolated` (only where `MayAllowIsolated`, the cost of compiling the
+ * check without them): a vertex in no face passes (the caller sets it aside,
  * `Isolated_vertices`); otherwise it is refused, with the parameter that
  * accepts it named.
  */
-template <class Mesh, class VertexPointMap>
+template <bool MayAllowIsolated = false, class Mesh, class VertexPointMap>
 void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size,
                 bool allow_isolated = false)
 {
-  if(passes_mesh_checks(mesh, vpm, required_face_size))
+  if(passes_mesh_checks(mesh, vpm, required_face_size, MayAllowIsolated && allow_isolated))
     return;
   require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
   require(!has_garbage(mesh),
@@ -194,10 +214,8 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     if(!is_finite_point(get(vpm, v)))
       refuse_element(scheme, "vertex", i, "has a non-finite coordinate");
     if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge()) {
-      if(!allow_isolated)
-        refuse_element(scheme, "vertex", i,
-                       "is isolated (it belongs to no face); the named parameter "
-                       "isolated_vertices(Isolated_vertices::keep) or (Isolated_vertices::drop) accepts it");
+      if(!(MayAllowIsolated && allow_isolated))
+        refuse_isolated(scheme, i);
       ++i;
       continue;
     }
@@ -207,15 +225,84 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
   }
   i = 0;
   for(auto f : faces(mesh)) {
-    const std::size_t size = CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size();
-    if(size < 3)
-      refuse_element(scheme, "face", i, "has only " + std::to_string(size) + " vertices");
-    if(required_face_size != 0 && size != static_cast<std::size_t>(required_face_size))
-      throw Bad_input(scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) +
-                      " vertices; face " + std::to_string(i) + " has " + std::to_string(size));
+    check_face_size(scheme, i, CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size(), required_face_size);
     ++i;
   }
-  require(valid_without_isolated_vertices(mesh), scheme + ": the mesh is not a valid polygon mesh");
+  bool valid = false;
+  if constexpr(MayAllowIsolated)
+    valid = valid_without_isolated_vertices(mesh);
+  else
+    valid = CGAL::is_valid_polygon_mesh(mesh);
+  require(valid, scheme + ": the mesh is not a valid polygon mesh");
+}
+
+/*
+ * A Surface_mesh: the same refusals as above, from plain loops over its
+ * arrays. The fast check (passes_mesh_checks) is CGAL's validity and more,
+ * so a mesh it refuses whose elements all pass is not a valid polygon mesh;
+ * neither dynamic maps nor CGAL::is_valid_polygon_mesh are compiled into
+ * every program for this error path (about a quarter of the library's part
+ * of a plain program's compile time).
+ */
+template <bool MayAllowIsolated = false, class P, class VertexPointMap>
+void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const std::string& scheme,
+                int required_face_size, bool allow_isolated = false)
+{
+  using SM = CGAL::Surface_mesh<P>;
+  using size_type = typename SM::size_type;
+  using H = typename SM::Halfedge_index;
+  const bool isolated_pass = MayAllowIsolated && allow_isolated;
+  if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
+    return;
+  require(mesh.number_of_faces() != 0, scheme + ": the mesh is empty (it has no faces)");
+  require(!mesh.has_garbage(),
+          scheme + ": the mesh still holds removed elements (garbage); call collect_garbage() on it first");
+  const std::string invalid = scheme + ": the mesh is not a valid polygon mesh";
+  const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
+  const auto in_range = [nh](H h) { return std::size_t(h) < nh; };
+  std::vector<std::size_t> incoming(nv, 0), incoming_border(nv, 0);
+  for(std::size_t i = 0; i < nh; ++i) {
+    const H h(static_cast<size_type>(i));
+    const std::size_t t = std::size_t(mesh.target(h));
+    require(t < nv && in_range(mesh.next(h)) && in_range(mesh.opposite(h)), invalid);
+    ++incoming[t];
+    if(mesh.face(h) == SM::null_face())
+      ++incoming_border[t];
+  }
+  for(std::size_t i = 0; i < nv; ++i) {
+    const typename SM::Vertex_index v(static_cast<size_type>(i));
+    if(!is_finite_point(get(vpm, v)))
+      refuse_element(scheme, "vertex", i, "has a non-finite coordinate");
+    const H h = mesh.halfedge(v);
+    if(h == SM::null_halfedge()) {
+      if(!isolated_pass)
+        refuse_isolated(scheme, i);
+      continue;
+    }
+    require(in_range(h) && mesh.target(h) == v, invalid);
+    std::size_t fan = 0; // the halfedges around the target, as CGAL's circulator walks them
+    H g = h;
+    do {
+      ++fan;
+      g = mesh.opposite(mesh.next(g));
+    } while(g != h && fan <= nh);
+    require(g == h, invalid);
+    if(fan != incoming[i] || incoming_border[i] > 1)
+      refuse_element(scheme, "vertex", i, "is non-manifold (its faces do not form one fan)");
+  }
+  for(std::size_t i = 0; i < nf; ++i) {
+    const H h = mesh.halfedge(typename SM::Face_index(static_cast<size_type>(i)));
+    require(in_range(h), invalid);
+    std::size_t size = 0;
+    H g = h;
+    do {
+      ++size;
+      g = mesh.next(g);
+    } while(g != h && size <= nh);
+    require(g == h, invalid);
+    check_face_size(scheme, i, size, required_face_size);
+  }
+  throw Bad_input(invalid);
 }
 
 /// "17.0 GB", "512 MB", "3 kB": a size for a message
