@@ -50,6 +50,20 @@ bool passes_mesh_checks(const Mesh&, const VertexPointMap&, int, bool)
   return false;
 }
 
+// the halfedges of the face cycle of `h` (in range), 0 if next does not
+// come back to h within all the halfedges
+template <class P>
+std::size_t face_cycle_length(const CGAL::Surface_mesh<P>& mesh, typename CGAL::Surface_mesh<P>::Halfedge_index h)
+{
+  std::size_t size = 0;
+  auto g = h;
+  do {
+    ++size;
+    g = mesh.next(g);
+  } while(g != h && size <= mesh.number_of_halfedges());
+  return g == h ? size : 0;
+}
+
 /*
  * Surface_mesh without garbage: one pass over the halfedge, vertex and face
  * arrays that is enough for everything `check_mesh` checks below (including
@@ -125,13 +139,8 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
     const H h = mesh.halfedge(f);
     if(std::size_t(h) >= nh || mesh.face(h) != f)
       return false;
-    std::size_t size = 0;
-    H g = h;
-    do {
-      ++size;
-      g = mesh.next(g);
-    } while(g != h && size <= nh);
-    if(g != h || size < 3 || (required_face_size != 0 && size != static_cast<std::size_t>(required_face_size)))
+    const std::size_t size = face_cycle_length(mesh, h);
+    if(size < 3 || (required_face_size != 0 && size != static_cast<std::size_t>(required_face_size)))
       return false;
     around_faces += size;
   }
@@ -293,13 +302,8 @@ void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, co
   for(std::size_t i = 0; i < nf; ++i) {
     const H h = mesh.halfedge(typename SM::Face_index(static_cast<size_type>(i)));
     require(in_range(h), invalid);
-    std::size_t size = 0;
-    H g = h;
-    do {
-      ++size;
-      g = mesh.next(g);
-    } while(g != h && size <= nh);
-    require(g == h, invalid);
+    const std::size_t size = face_cycle_length(mesh, h);
+    require(size != 0, invalid);
     check_face_size(scheme, i, size, required_face_size);
   }
   throw Bad_input(invalid);
