@@ -5,11 +5,14 @@
 // surface_properties.h.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <gtest/gtest.h>
@@ -614,4 +617,36 @@ TEST(QuadSchemes, isolated_vertices_are_dropped_or_kept_on_request)
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), tetrahedron));
   expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::loop_subdivision(m, with(2, p)); });
   expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::sqrt3_subdivision(m, with(2, p)); });
+
+  // the stencil tables have no such parameter: their refusal names none
+  Mesh for_table;
+  CGAL::copy_face_graph(cube, for_table);
+  for_table.add_vertex(K::Point_3(5, 5, 5));
+  const std::string table_message =
+    testing_utils::bad_input_message([&] { S::make_stencil_table(for_table, S::Catmull_clark_mask<Mesh>()); });
+  EXPECT_NE(table_message.find("vertex 8 is isolated (it belongs to no face)"), std::string::npos) << table_message;
+  EXPECT_EQ(table_message.find("isolated_vertices("), std::string::npos) << table_message;
+
+  // any FaceGraph: a Polyhedron_3 (the generic checks) drops and keeps alike
+  using Polyhedron = CGAL::Polyhedron_3<K>;
+  const auto polyhedron_with_isolated = [&] {
+    Polyhedron p;
+    CGAL::copy_face_graph(cube, p);
+    put(CGAL::vertex_point, p, add_vertex(p), K::Point_3(5, 5, 5));
+    return p;
+  };
+  Mesh expected = cube;
+  S::catmull_clark_subdivision(expected, with(2, Policy::refuse));
+  Polyhedron refused = polyhedron_with_isolated();
+  const std::string message =
+    testing_utils::bad_input_message([&] { S::catmull_clark_subdivision(refused, with(2, Policy::refuse)); });
+  EXPECT_NE(message.find("vertex 8 is isolated"), std::string::npos) << message;
+  Polyhedron dropped = polyhedron_with_isolated();
+  S::catmull_clark_subdivision(dropped, with(2, Policy::drop));
+  EXPECT_EQ(num_vertices(dropped), num_vertices(expected));
+  EXPECT_LT(position_mismatch(dropped, expected), 1e-15);
+  Polyhedron kept = polyhedron_with_isolated();
+  S::catmull_clark_subdivision(kept, with(2, Policy::keep));
+  EXPECT_EQ(num_vertices(kept), num_vertices(expected) + 1);
+  EXPECT_EQ(num_faces(kept), num_faces(expected));
 }

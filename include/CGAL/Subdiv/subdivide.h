@@ -71,10 +71,13 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   constexpr bool may_set_aside = !parameters::is_default_parameter<NamedParameters, internal::isolated_vertices_t>::value;
   const Isolated_vertices isolated =
     choose_parameter(get_parameter(np, internal::isolated_vertices_t()), Isolated_vertices::refuse);
+  using internal::Isolated_check;
   if constexpr(may_set_aside)
-    internal::check_mesh<true>(mesh, vpm, mask.name(), Host::required_face_size, isolated != Isolated_vertices::refuse);
+    internal::check_mesh<true>(mesh, vpm, mask.name(), Host::required_face_size,
+                               isolated == Isolated_vertices::refuse ? Isolated_check::refuse_naming_parameter
+                                                                     : Isolated_check::allow);
   else
-    internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
+    internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, Isolated_check::refuse_naming_parameter);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);

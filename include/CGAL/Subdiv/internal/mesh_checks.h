@@ -155,11 +155,25 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
   throw Bad_input(scheme + ": " + element + " " + std::to_string(index) + " " + what);
 }
 
-[[noreturn]] inline void refuse_isolated(const std::string& scheme, std::size_t index)
+/*
+ * What check_mesh does with a vertex in no face: refuse it, refuse it naming
+ * the parameter that accepts it (where the caller has that parameter,
+ * `subdivide()`), or let it pass (the caller sets it aside).
+ */
+enum class Isolated_check
+{
+  refuse,
+  refuse_naming_parameter,
+  allow
+};
+
+[[noreturn]] inline void refuse_isolated(const std::string& scheme, std::size_t index, Isolated_check isolated)
 {
   refuse_element(scheme, "vertex", index,
-                 "is isolated (it belongs to no face); the named parameter "
-                 "isolated_vertices(Isolated_vertices::keep) or (Isolated_vertices::drop) accepts it");
+                 isolated == Isolated_check::refuse_naming_parameter
+                   ? "is isolated (it belongs to no face); the named parameter "
+                     "isolated_vertices(Isolated_vertices::keep) or (Isolated_vertices::drop) accepts it"
+                   : "is isolated (it belongs to no face)");
 }
 
 inline void check_face_size(const std::string& scheme, std::size_t index, std::size_t size, int required_face_size)
@@ -189,16 +203,15 @@ bool valid_without_isolated_vertices(const Mesh& mesh)
 }
 
 /*
- * `allow_isolated` (only where `MayAllowIsolated`, the cost of compiling the
- * check without them): a vertex in no face passes (the caller sets it aside,
- * `Isolated_vertices`); otherwise it is refused, with the parameter that
- * accepts it named.
+ * `isolated`: what a vertex in no face meets; `Isolated_check::allow` only
+ * where `MayAllowIsolated` (the check that ignores them costs compile time).
  */
 template <bool MayAllowIsolated = false, class Mesh, class VertexPointMap>
 void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size,
-                bool allow_isolated = false)
+                Isolated_check isolated = Isolated_check::refuse)
 {
-  if(passes_mesh_checks(mesh, vpm, required_face_size, MayAllowIsolated && allow_isolated))
+  const bool isolated_pass = MayAllowIsolated && isolated == Isolated_check::allow;
+  if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
   require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
   require(!has_garbage(mesh),
@@ -223,8 +236,8 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     if(!is_finite_point(get(vpm, v)))
       refuse_element(scheme, "vertex", i, "has a non-finite coordinate");
     if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge()) {
-      if(!(MayAllowIsolated && allow_isolated))
-        refuse_isolated(scheme, i);
+      if(!isolated_pass)
+        refuse_isolated(scheme, i, isolated);
       ++i;
       continue;
     }
@@ -255,12 +268,12 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
  */
 template <bool MayAllowIsolated = false, class P, class VertexPointMap>
 void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const std::string& scheme,
-                int required_face_size, bool allow_isolated = false)
+                int required_face_size, Isolated_check isolated = Isolated_check::refuse)
 {
   using SM = CGAL::Surface_mesh<P>;
   using size_type = typename SM::size_type;
   using H = typename SM::Halfedge_index;
-  const bool isolated_pass = MayAllowIsolated && allow_isolated;
+  const bool isolated_pass = MayAllowIsolated && isolated == Isolated_check::allow;
   if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
   require(mesh.number_of_faces() != 0, scheme + ": the mesh is empty (it has no faces)");
@@ -285,7 +298,7 @@ void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, co
     const H h = mesh.halfedge(v);
     if(h == SM::null_halfedge()) {
       if(!isolated_pass)
-        refuse_isolated(scheme, i);
+        refuse_isolated(scheme, i, isolated);
       continue;
     }
     require(in_range(h) && mesh.target(h) == v, invalid);
