@@ -157,12 +157,14 @@ TEST(Loop, bad_input_is_refused_and_the_mesh_is_unchanged)
   const Mesh::Halfedge_index h0(0), h1(1);
   tangled.set_next(h0, tangled.next(h1));
   const std::string tangled_message = message(tangled);
-  EXPECT_NE(tangled_message.find("(Loop 1987 beta): the mesh is not a valid polygon mesh"), std::string::npos) << tangled_message;
+  EXPECT_NE(tangled_message.find("(Loop 1987 beta): the mesh is not a valid polygon mesh"), std::string::npos)
+    << tangled_message;
   Mesh out_of_range;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), out_of_range));
   out_of_range.set_target(h0, Mesh::Vertex_index(99));
   const std::string range_message = message(out_of_range);
-  EXPECT_NE(range_message.find("(Loop 1987 beta): the mesh is not a valid polygon mesh"), std::string::npos) << range_message;
+  EXPECT_NE(range_message.find("(Loop 1987 beta): the mesh is not a valid polygon mesh"), std::string::npos)
+    << range_message;
 
   // 40 levels: 80 faces times 4^40 would not fit in any memory
   Mesh big;

@@ -583,7 +583,8 @@ void expect_isolated_vertices_set_aside(const Mesh& clean, const Subdivide& subd
   // refused (the default, QuadSchemes.bad_input_is_refused_and_the_mesh_is_unchanged)
   // with the parameter named; kept or dropped with carried data: refused
   const Mesh copy = with_isolated;
-  const std::string refused = testing_utils::bad_input_message([&] { subdivide_with(with_isolated, S::Isolated_vertices::refuse); });
+  const std::string refused =
+    testing_utils::bad_input_message([&] { subdivide_with(with_isolated, S::Isolated_vertices::refuse); });
   EXPECT_NE(refused.find("vertex 0 is isolated (it belongs to no face); the named parameter "
                          "isolated_vertices(Isolated_vertices::keep)"),
             std::string::npos)
@@ -610,13 +611,15 @@ TEST(QuadSchemes, isolated_vertices_are_dropped_or_kept_on_request)
     return S::parameters::number_of_iterations(levels).isolated_vertices(policy);
   };
   const Mesh cube = read_mesh("cgal/cube_quad.off");
-  expect_isolated_vertices_set_aside(
-    cube, [&](Mesh& m, const Policy& p) { S::catmull_clark_subdivision(m, with(2, p)); });
+  expect_isolated_vertices_set_aside(cube,
+                                     [&](Mesh& m, const Policy& p) { S::catmull_clark_subdivision(m, with(2, p)); });
   expect_isolated_vertices_set_aside(cube, [&](Mesh& m, const Policy& p) { S::doo_sabin_subdivision(m, with(1, p)); });
   Mesh tetrahedron;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(test_mesh("cgal/tetrahedron.off"), tetrahedron));
-  expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::loop_subdivision(m, with(2, p)); });
-  expect_isolated_vertices_set_aside(tetrahedron, [&](Mesh& m, const Policy& p) { S::sqrt3_subdivision(m, with(2, p)); });
+  expect_isolated_vertices_set_aside(tetrahedron,
+                                     [&](Mesh& m, const Policy& p) { S::loop_subdivision(m, with(2, p)); });
+  expect_isolated_vertices_set_aside(tetrahedron,
+                                     [&](Mesh& m, const Policy& p) { S::sqrt3_subdivision(m, with(2, p)); });
 
   // the stencil tables have no such parameter: their refusal names none
   Mesh for_table;

@@ -60,8 +60,7 @@ struct isolated_vertices_t
  * What `subdivide()` does with a vertex that belongs to no face (OpenSubdiv
  * accepts them; OBJ and PLY files often hold some).
  */
-enum class Isolated_vertices
-{
+enum class Isolated_vertices {
   /// a `Bad_input` that names the vertex (the default: a mesh with one is
   /// often a broken mesh)
   refuse,

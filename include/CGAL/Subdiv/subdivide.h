@@ -68,14 +68,15 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
 
   // setting isolated vertices aside is compiled only where the parameter is
   // passed (collect_garbage() alone costs a plain program 0.3 s to compile)
-  constexpr bool may_set_aside = !parameters::is_default_parameter<NamedParameters, internal::isolated_vertices_t>::value;
+  constexpr bool may_set_aside =
+    !parameters::is_default_parameter<NamedParameters, internal::isolated_vertices_t>::value;
   const Isolated_vertices isolated =
     choose_parameter(get_parameter(np, internal::isolated_vertices_t()), Isolated_vertices::refuse);
   using internal::Isolated_check;
   if constexpr(may_set_aside)
-    internal::check_mesh<true>(mesh, vpm, mask.name(), Host::required_face_size,
-                               isolated == Isolated_vertices::refuse ? Isolated_check::refuse_naming_parameter
-                                                                     : Isolated_check::allow);
+    internal::check_mesh<true>(
+      mesh, vpm, mask.name(), Host::required_face_size,
+      isolated == Isolated_vertices::refuse ? Isolated_check::refuse_naming_parameter : Isolated_check::allow);
   else
     internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, Isolated_check::refuse_naming_parameter);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),

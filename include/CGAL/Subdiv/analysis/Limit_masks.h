@@ -20,8 +20,8 @@
 
 #include <cmath>
 #include <complex>
-#include <optional>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>

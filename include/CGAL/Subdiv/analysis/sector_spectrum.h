@@ -121,8 +121,8 @@ inline std::complex<double> root_of_unity_power(int j, int d, int n)
  * constant over the sectors). Its rows sum to one as S's do.
  */
 template <class FT>
-Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>
-sector_block_0(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S, const Sector_layout& layout)
+Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic> sector_block_0(
+  const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S, const Sector_layout& layout)
 {
   const Eigen::Index k = static_cast<Eigen::Index>(layout.slots());
   Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic> B(k + 1, k + 1);
@@ -245,8 +245,8 @@ inline Eigen::VectorXcd sector_left_eigenvector(const Eigen::MatrixXd& D, const 
   Eigen::VectorXcd full = Eigen::VectorXcd::Zero(D.rows());
   for(std::size_t b = 0; b < layout.slots(); ++b)
     for(int r = 0; r < layout.sectors; ++r)
-      full[layout.label(b, r)] =
-        solver.eigenvectors()(static_cast<Eigen::Index>(b), nearest) * std::conj(root_of_unity_power(j, r, layout.sectors));
+      full[layout.label(b, r)] = solver.eigenvectors()(static_cast<Eigen::Index>(b), nearest) *
+                                 std::conj(root_of_unity_power(j, r, layout.sectors));
   return full;
 }
 

@@ -42,7 +42,7 @@ void collect_removed(CGAL::Surface_mesh<Point>& mesh)
  */
 template <class Mesh, class VertexPointMap>
 Isolated_points<VertexPointMap> remove_isolated_vertices(Mesh& mesh, const VertexPointMap& vpm,
-                                                                   const std::string& scheme, bool carried)
+                                                         const std::string& scheme, bool carried)
 {
   using GT = boost::graph_traits<Mesh>;
   std::vector<typename GT::vertex_descriptor> isolated;
@@ -65,8 +65,7 @@ Isolated_points<VertexPointMap> remove_isolated_vertices(Mesh& mesh, const Verte
 
 // appends one vertex per point, in no face
 template <class Mesh, class VertexPointMap>
-void add_isolated_vertices(Mesh& mesh, const VertexPointMap& vpm,
-                           const Isolated_points<VertexPointMap>& points)
+void add_isolated_vertices(Mesh& mesh, const VertexPointMap& vpm, const Isolated_points<VertexPointMap>& points)
 {
   for(const auto& p : points)
     put(vpm, add_vertex(mesh), p);

@@ -160,12 +160,7 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
  * the parameter that accepts it (where the caller has that parameter,
  * `subdivide()`), or let it pass (the caller sets it aside).
  */
-enum class Isolated_check
-{
-  refuse,
-  refuse_naming_parameter,
-  allow
-};
+enum class Isolated_check { refuse, refuse_naming_parameter, allow };
 
 [[noreturn]] inline void refuse_isolated(const std::string& scheme, std::size_t index, Isolated_check isolated)
 {
@@ -194,7 +189,7 @@ bool valid_without_isolated_vertices(const Mesh& mesh)
     if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge()) {
       Mesh faces_only(mesh);
       for(auto w : std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>(vertices(faces_only).begin(),
-                                                                                       vertices(faces_only).end()))
+                                                                                      vertices(faces_only).end()))
         if(halfedge(w, faces_only) == boost::graph_traits<Mesh>::null_halfedge())
           CGAL::remove_vertex(w, faces_only);
       return CGAL::is_valid_polygon_mesh(faces_only);
