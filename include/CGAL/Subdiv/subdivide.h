@@ -72,13 +72,10 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     !parameters::is_default_parameter<NamedParameters, internal::isolated_vertices_t>::value;
   const Isolated_vertices isolated =
     choose_parameter(get_parameter(np, internal::isolated_vertices_t()), Isolated_vertices::refuse);
-  using internal::Isolated_check;
-  if constexpr(may_set_aside)
-    internal::check_mesh<true>(
-      mesh, vpm, mask.name(), Host::required_face_size,
-      isolated == Isolated_vertices::refuse ? Isolated_check::refuse_naming_parameter : Isolated_check::allow);
-  else
-    internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, Isolated_check::refuse_naming_parameter);
+  const internal::Isolated_check isolated_check = isolated == Isolated_vertices::refuse
+                                                    ? internal::Isolated_check::refuse_naming_parameter
+                                                    : internal::Isolated_check::allow;
+  internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated_check);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);

@@ -233,6 +233,16 @@ void confirm_rational_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen:
   }
 }
 
+// the tangent masks of `result` from a basis (a, b) of the subdominant left
+// eigenspace, put in the canonical basis
+template <class FT>
+void set_tangent_pair(Eigen::VectorXd a, Eigen::VectorXd b, Surface_analysis<FT>& result)
+{
+  canonical_pair(a, b);
+  result.tangent_mask[0].assign(a.data(), a.data() + a.size());
+  result.tangent_mask[1].assign(b.data(), b.data() + b.size());
+}
+
 // the tangent masks from a dense left eigen-solve: the real and imaginary
 // parts of lambda_1's left eigenvector if it is complex, else the left
 // eigenvectors of lambda_1 and lambda_2; put in the canonical basis
@@ -261,11 +271,8 @@ void dense_tangent_pair(const Eigen::MatrixXd& D, const std::vector<std::complex
     a = left.eigenvectors().col(near[0]).real();
     b = left.eigenvectors().col(near[1]).real();
   }
-  if(a.size() == m) {
-    canonical_pair(a, b);
-    result.tangent_mask[0].assign(a.data(), a.data() + m);
-    result.tangent_mask[1].assign(b.data(), b.data() + m);
-  }
+  if(a.size() == m)
+    set_tangent_pair(a, b, result);
 }
 
 } // namespace internal
@@ -457,12 +464,8 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
     const int j = by_frequency.frequency[1]; // the subdominant's
     if(j != 0 && 2 * j != valence) {
       const Eigen::VectorXcd l = internal::sector_left_eigenvector(D, *sectors, j, ev[1]);
-      if(l.size() == m) {
-        Eigen::VectorXd a = l.real(), b = l.imag();
-        internal::canonical_pair(a, b);
-        result.tangent_mask[0].assign(a.data(), a.data() + m);
-        result.tangent_mask[1].assign(b.data(), b.data() + m);
-      }
+      if(l.size() == m)
+        internal::set_tangent_pair(l.real(), l.imag(), result);
     }
   } else {
     result.limit_mask = internal::normalised_left_fixed_vector(result.matrix);

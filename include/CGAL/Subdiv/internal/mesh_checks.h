@@ -197,15 +197,12 @@ bool valid_without_isolated_vertices(const Mesh& mesh)
   return CGAL::is_valid_polygon_mesh(mesh);
 }
 
-/*
- * `isolated`: what a vertex in no face meets; `Isolated_check::allow` only
- * where `MayAllowIsolated` (the check that ignores them costs compile time).
- */
-template <bool MayAllowIsolated = false, class Mesh, class VertexPointMap>
+// `isolated`: what a vertex in no face meets
+template <class Mesh, class VertexPointMap>
 void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& scheme, int required_face_size,
                 Isolated_check isolated = Isolated_check::refuse)
 {
-  const bool isolated_pass = MayAllowIsolated && isolated == Isolated_check::allow;
+  const bool isolated_pass = isolated == Isolated_check::allow;
   if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
   require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
@@ -245,12 +242,8 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     check_face_size(scheme, i, CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size(), required_face_size);
     ++i;
   }
-  bool valid = false;
-  if constexpr(MayAllowIsolated)
-    valid = valid_without_isolated_vertices(mesh);
-  else
-    valid = CGAL::is_valid_polygon_mesh(mesh);
-  require(valid, scheme + ": the mesh is not a valid polygon mesh");
+  require(isolated_pass ? valid_without_isolated_vertices(mesh) : CGAL::is_valid_polygon_mesh(mesh),
+          scheme + ": the mesh is not a valid polygon mesh");
 }
 
 /*
@@ -261,14 +254,14 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
  * every program for this error path (about a quarter of the library's part
  * of a plain program's compile time).
  */
-template <bool MayAllowIsolated = false, class P, class VertexPointMap>
+template <class P, class VertexPointMap>
 void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, const std::string& scheme,
                 int required_face_size, Isolated_check isolated = Isolated_check::refuse)
 {
   using SM = CGAL::Surface_mesh<P>;
   using size_type = typename SM::size_type;
   using H = typename SM::Halfedge_index;
-  const bool isolated_pass = MayAllowIsolated && isolated == Isolated_check::allow;
+  const bool isolated_pass = isolated == Isolated_check::allow;
   if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
   require(mesh.number_of_faces() != 0, scheme + ": the mesh is empty (it has no faces)");
