@@ -157,6 +157,24 @@ Eigen::MatrixXd to_double_matrix(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::
 
 constexpr double eigenvalue_tolerance = 1e-8;
 
+// replaces the `multiplicity` computed values nearest to the exact eigenvalue
+// `target` (each within `tolerance` of it) by `target`
+inline void snap_eigenvalues(std::vector<std::complex<double>>& values, double target, int multiplicity,
+                             double tolerance)
+{
+  std::vector<bool> used(values.size(), false);
+  for(; multiplicity > 0; --multiplicity) {
+    std::size_t best = values.size();
+    for(std::size_t i = 0; i < values.size(); ++i)
+      if(!used[i] && (best == values.size() || std::abs(values[i] - target) < std::abs(values[best] - target)))
+        best = i;
+    if(best == values.size() || std::abs(values[best] - target) > tolerance)
+      break;
+    values[best] = std::complex<double>(target, 0.0);
+    used[best] = true;
+  }
+}
+
 // the spectral part of the analysis, shared by curve schemes and Bezier
 // The eigenvalues 1, 1/2, 1/4 and 1/8 (those the verdicts and the predicted
 // rate depend on) are confirmed exactly, with their algebraic multiplicity, by
@@ -180,19 +198,7 @@ void snap_dyadic_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dyna
       near = near || std::abs(value - target) < 1e-4 * target;
     if(!near)
       continue;
-    int multiplicity = algebraic_multiplicity(S, lambda);
-    // replace the `multiplicity` computed values nearest to the exact one
-    std::vector<bool> used(values.size(), false);
-    for(; multiplicity > 0; --multiplicity) {
-      std::size_t best = values.size();
-      for(std::size_t i = 0; i < values.size(); ++i)
-        if(!used[i] && (best == values.size() || std::abs(values[i] - target) < std::abs(values[best] - target)))
-          best = i;
-      if(best == values.size() || std::abs(values[best] - target) > 1e-4 * target)
-        break;
-      values[best] = std::complex<double>(target, 0.0);
-      used[best] = true;
-    }
+    snap_eigenvalues(values, target, algebraic_multiplicity(S, lambda), 1e-4 * target);
   }
   sort_eigenvalues(values);
 }
