@@ -119,6 +119,17 @@ public:
   /// `Dual_split` and `Sqrt3_split` do not read it.
   CGAL::Subdiv::Border_corners border_corners() const;
 
+  /// optional, with `with_sharp_level()`: the sharpness tags of the level
+  /// being refined (null without tags). When the mask has it,
+  /// `Triangle_quadrisection` and `Quad_split` build their views from the
+  /// tags (the rules of `Sharp_rules`), and `subdivide()` accepts
+  /// `edge_sharpness_map` and `vertex_sharpness_map`; `Loop_mask` and
+  /// `Catmull_clark_mask` have it.
+  const unspecified_type* sharp_level() const;
+
+  /// optional: a copy of the mask that refines with the tags of `level`
+  SurfaceSubdivisionMask with_sharp_level(const unspecified_type* level) const;
+
   /// @}
 
   /// \name Node functions of the primal splits (Split::triangle_quadrisection, Split::quad, Split::sqrt3)
@@ -126,7 +137,8 @@ public:
 
   /// reports the weights of the new vertex of old vertex `v.vertex()`. The
   /// view gives its valence, its faces, its border halfedges and its rule
-  /// (`Vertex_rule::smooth`, `crease` on the border, `corner`). With
+  /// (`Vertex_rule::smooth`, `crease` on the border, `corner`; with
+  /// sharpness tags also `dart`, interior creases and the rule of the next level). With
   /// `Split::sqrt3` it is called for interior vertices only.
   template <class Accumulator>
   void vertex_node(const CGAL::Subdiv::Vertex_view<Polygon_mesh>& v, Accumulator& acc) const;

@@ -52,6 +52,12 @@ struct extended_spectrum_t
 {};
 struct isolated_vertices_t
 {};
+struct edge_sharpness_map_t
+{};
+struct vertex_sharpness_map_t
+{};
+struct crease_method_t
+{};
 
 } // namespace internal
 
@@ -120,7 +126,13 @@ using CGAL::parameters::is_default_parameter;
  *    (default this machine's): a level count whose output would take more
  *    is refused before any work;
  *  - isolated_vertices: surfaces, what `subdivide()` does with vertices that
- *    belong to no face (`Isolated_vertices`; default refuse).
+ *    belong to no face (`Isolated_vertices`; default refuse);
+ *  - edge_sharpness_map, vertex_sharpness_map: surfaces, read-write property
+ *    maps of the sharpness of every edge and vertex, as OpenSubdiv defines it
+ *    (0 smooth, 10 and above infinitely sharp); `subdivide()` writes the
+ *    sharpness of the children into them;
+ *  - crease_method: surfaces, how semi-sharp edges decay (`Crease_method`;
+ *    default uniform).
  * Kept by reference (the chain holds a pointer to the argument):
  *  - carried_data: other vertex and face data to carry through the levels
  *    (`Carried_data`);
@@ -143,7 +155,10 @@ using CGAL::parameters::is_default_parameter;
   X(rings, internal::rings_t)                                        \
   X(max_memory, internal::max_memory_t)                              \
   X(extended_spectrum, internal::extended_spectrum_t)                \
-  X(isolated_vertices, internal::isolated_vertices_t)
+  X(isolated_vertices, internal::isolated_vertices_t)                \
+  X(edge_sharpness_map, internal::edge_sharpness_map_t)              \
+  X(vertex_sharpness_map, internal::vertex_sharpness_map_t)          \
+  X(crease_method, internal::crease_method_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \

@@ -11,6 +11,7 @@
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
+#include <CGAL/Subdiv/views/Sharp_level.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -18,6 +19,54 @@
 
 namespace CGAL {
 namespace Subdiv {
+
+namespace internal {
+
+/*
+ * One level of `subdivide()` with sharpness tags: the tags of the level are
+ * read from the maps of `np`, the mask refines with them, and the children's
+ * sharpness is written back into the maps.
+ */
+template <class PolygonMesh, class Mask, class NamedParameters, class RefineOne>
+void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np, const RefineOne& refine_one)
+{
+  static_assert(Has_sharp_level<Mask>::value,
+                "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  using GT = boost::graph_traits<PolygonMesh>;
+  using FT = typename Mask::Number_type;
+  const Crease_method method =
+    parameters::choose_parameter(get_parameter(np, crease_method_t()), Crease_method::uniform);
+  const auto edges = get_parameter(np, edge_sharpness_map_t());
+  const auto vertices = get_parameter(np, vertex_sharpness_map_t());
+  constexpr bool has_edges = !is_default_parameter<NamedParameters, edge_sharpness_map_t>::value;
+  constexpr bool has_vertices = !is_default_parameter<NamedParameters, vertex_sharpness_map_t>::value;
+  const auto edge_sharpness = [&](typename GT::edge_descriptor e) {
+    if constexpr(has_edges)
+      return get(edges, e);
+    else {
+      (void)e;
+      return 0;
+    }
+  };
+  const auto vertex_sharpness = [&](typename GT::vertex_descriptor v) {
+    if constexpr(has_vertices)
+      return get(vertices, v);
+    else {
+      (void)v;
+      return 0;
+    }
+  };
+  const Sharp_level<PolygonMesh, FT> tags(mesh, edge_sharpness, vertex_sharpness, method, border_corners_of(mask),
+                                          mask.name());
+  using Edges = std::remove_const_t<decltype(edges)>;
+  using Vertices = std::remove_const_t<decltype(vertices)>;
+  Sharpness_writer<PolygonMesh, FT, Edges, Vertices> writer(mesh, tags, &edges, &vertices);
+  refine_one(mask.with_sharp_level(&tags), writer);
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSubdivFunctions
@@ -43,6 +92,12 @@ namespace Subdiv {
  *   - `isolated_vertices` (an `Isolated_vertices`, default `refuse`): what
  *     happens to vertices that belong to no face: refused, dropped, or kept
  *     unrefined after the refined vertices (not with `carried_data`);
+ *   - `edge_sharpness_map`, `vertex_sharpness_map` (read-write property
+ *     maps, by default none): sharpness tags as OpenSubdiv defines them (0
+ *     smooth, fractional semi-sharp, 10 and above infinitely sharp; border
+ *     edges are always sharp), refined with their decay and blends, with
+ *     `crease_method` (`Crease_method`, default uniform); after each level
+ *     the maps hold the sharpness of the children (Loop and Catmull-Clark);
  *   - `threads` (default 1; 0: TBB's choice): how many threads refine a
  *     `Surface_mesh` (points with double coordinates; with TBB only); the
  *     result is the same bit for bit with any number.
@@ -91,21 +146,30 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
       set_aside = internal::remove_isolated_vertices(mesh, vpm, mask.name(), carried);
 
   internal::reserve_levels<Host>(mesh, levels);
-  // The carried path (rows recorded per level) is compiled only where
-  // carried_data is passed: a plain program does not pay for it.
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
-    using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
-    if(carried) {
-      for(int level = 0; level < levels; ++level) { // the points from the recorded stencils, as the data
+  // one level with `level_mask` (the mask, with the sharpness tags of the
+  // level if there are some) and `sinks`; the carried path (rows recorded per
+  // level) is compiled only where carried_data is passed: a plain program
+  // does not pay for it
+  const auto refine_one = [&](const Mask& level_mask, auto&... sinks) {
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
+      using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
+      if(carried) { // the points from the recorded stencils, as the data
         typename Data::Level carried_level(*data, mesh);
         const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried_level.stencils()};
-        internal::refine_level(mesh, mask, points, internal::Parallel_loop(1), carried_level);
+        internal::refine_level(mesh, level_mask, points, internal::Parallel_loop(1), carried_level, sinks...);
+        return;
       }
-      return;
     }
+    internal::refine_level(mesh, level_mask, internal::Mask_points<VPM>{vpm}, loop, sinks...);
+  };
+  constexpr bool tagged = !parameters::is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
+                          !parameters::is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value;
+  for(int level = 0; level < levels; ++level) {
+    if constexpr(tagged)
+      internal::refine_with_sharpness(mesh, mask, np, refine_one);
+    else
+      refine_one(mask);
   }
-  for(int level = 0; level < levels; ++level)
-    internal::refine_level(mesh, mask, internal::Mask_points<VPM>{vpm}, loop);
   if constexpr(may_set_aside)
     if(isolated == Isolated_vertices::keep)
       internal::add_isolated_vertices(mesh, vpm, set_aside);

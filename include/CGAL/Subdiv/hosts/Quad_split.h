@@ -100,13 +100,12 @@ public:
   template <class Mask, class Accumulator>
   void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
-    const Border_corners corners = internal::border_corners_of(mask);
     if(j < m_vertex_count)
-      mask.vertex_node(Vertex_view<Mesh>(m_mesh, m_number.vertex(j), corners), acc);
+      mask.vertex_node(vertex_view(mask, m_mesh, m_number.vertex(j)), acc);
     else if(j < m_vertex_count + m_edge_count)
-      mask.edge_node(Edge_view<Mesh>(m_mesh, m_number.halfedge(2 * (j - m_vertex_count)), corners), acc);
+      mask.edge_node(edge_view(mask, m_mesh, m_number.halfedge(2 * (j - m_vertex_count))), acc);
     else
-      mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(j - m_vertex_count - m_edge_count), corners), acc);
+      mask.face_node(face_view(mask, m_mesh, m_number.face(j - m_vertex_count - m_edge_count)), acc);
   }
 
   /*

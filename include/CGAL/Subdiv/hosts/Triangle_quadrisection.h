@@ -83,11 +83,10 @@ public:
   template <class Mask, class Accumulator>
   void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
-    const Border_corners corners = internal::border_corners_of(mask);
     if(j < m_vertex_count)
-      mask.vertex_node(Vertex_view<Mesh>(m_mesh, m_number.vertex(j), corners), acc);
+      mask.vertex_node(vertex_view(mask, m_mesh, m_number.vertex(j)), acc);
     else
-      mask.edge_node(Edge_view<Mesh>(m_mesh, m_number.halfedge(2 * (j - m_vertex_count)), corners), acc);
+      mask.edge_node(edge_view(mask, m_mesh, m_number.halfedge(2 * (j - m_vertex_count))), acc);
   }
 
   /// the new faces, made from a snapshot of the old mesh's faces (in parallel

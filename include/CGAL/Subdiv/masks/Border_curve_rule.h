@@ -44,26 +44,6 @@ public:
     m_odd = sorted(odd);
   }
 
-  /// the rules of a primal scheme's vertex that are not the mask's own: a
-  /// corner stays where it is, a crease vertex follows the curve's even rule
-  /// (`vertex_point()`). Returns false for a smooth vertex, whose rule is the
-  /// mask's. Sharp features of the next rules enter here, once for all masks.
-  template <class Mesh, class Accumulator>
-  bool sharp_vertex_point(const Vertex_view<Mesh>& v, Accumulator& acc) const
-  {
-    switch(v.rule()) {
-      case Vertex_rule::corner:
-        acc.add(v.vertex(), FT(1));
-        return true;
-      case Vertex_rule::crease:
-        vertex_point(v, acc);
-        return true;
-      case Vertex_rule::smooth:
-        break;
-    }
-    return false;
-  }
-
   /// the new position of the border vertex `v` (a primal scheme's even rule
   /// centred at it)
   template <class Mesh, class Accumulator>

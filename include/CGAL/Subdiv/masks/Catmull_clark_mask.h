@@ -5,7 +5,7 @@
 
 #include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -53,7 +53,7 @@ namespace Subdiv {
  * \cgalModels `SurfaceSubdivisionMask`
  */
 template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Catmull_clark_mask
+class Catmull_clark_mask : public With_sharp_rules<Catmull_clark_mask<Mesh, FT>, Mesh, FT>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -64,7 +64,7 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth)
-    : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
+    : With_sharp_rules<Catmull_clark_mask, Mesh, FT>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
   {}
 
   /// the same rules, with the same options, for another mesh type and number type
@@ -87,12 +87,21 @@ public:
   template <class Accumulator>
   void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
+    this->m_sharp.edge_node(e, acc, [&](auto& a) { smooth_edge_point(e, a); });
+  }
+
+  template <class Accumulator>
+  void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
+  {
+    this->m_sharp.vertex_node(view, acc, [&](auto& a) { smooth_vertex_point(view, a); });
+  }
+
+private:
+  template <class Accumulator>
+  static void smooth_edge_point(const Edge_view<Mesh>& e, Accumulator& acc)
+  {
     const Mesh& mesh = e.mesh();
     const halfedge_descriptor h = e.halfedge();
-    if(e.on_border()) {
-      m_border.edge_point(mesh, h, acc);
-      return;
-    }
     const FT quarter = FT(1) / FT(4);
     acc.add(source(h, mesh), quarter);
     acc.add(target(h, mesh), quarter);
@@ -101,10 +110,8 @@ public:
   }
 
   template <class Accumulator>
-  void vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
+  static void smooth_vertex_point(const Vertex_view<Mesh>& view, Accumulator& acc)
   {
-    if(m_border.sharp_vertex_point(view, acc))
-      return;
     const Mesh& mesh = view.mesh();
     const vertex_descriptor v = view.vertex();
     const int n = view.valence();
@@ -119,7 +126,6 @@ public:
     }
   }
 
-private:
   // adds s times the face point of face(h): s/|f| for each vertex of the face
   // (one walk around faces of up to 8 corners, which are kept on the way)
   template <class Accumulator>
@@ -146,7 +152,6 @@ private:
   }
 
   Border_corners m_corners;
-  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

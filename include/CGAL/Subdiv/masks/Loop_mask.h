@@ -5,7 +5,7 @@
 
 #include <CGAL/Subdiv/curves/Uniform_bspline_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
-#include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/loop_weights.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -35,7 +35,7 @@ namespace Subdiv {
  * \cgalModels `SurfaceSubdivisionMask`
  */
 template <class Mesh, class FT = internal::Mesh_FT<Mesh>, class Beta = Loop_beta>
-class Loop_mask
+class Loop_mask : public With_sharp_rules<Loop_mask<Mesh, FT, Beta>, Mesh, FT>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -44,7 +44,7 @@ public:
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   explicit Loop_mask(Border_corners corners = Border_corners::smooth)
-    : m_corners(corners), m_border(Uniform_bspline_scheme<FT>(3))
+    : With_sharp_rules<Loop_mask<Mesh, FT, Beta>, Mesh, FT>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
   {}
 
   /// the same rules, with the same options, for another mesh type and number type
@@ -61,8 +61,19 @@ public:
   template <class Accumulator>
   void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    if(m_border.sharp_vertex_point(v, acc))
-      return;
+    this->m_sharp.vertex_node(v, acc, [&](auto& a) { smooth_vertex_point(v, a); });
+  }
+
+  template <class Accumulator>
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
+  {
+    this->m_sharp.edge_node(e, acc, [&](auto& a) { smooth_edge_point(e, a); });
+  }
+
+private:
+  template <class Accumulator>
+  static void smooth_vertex_point(const Vertex_view<Mesh>& v, Accumulator& acc)
+  {
     const int n = v.valence();
     const FT beta = Beta::template beta<FT>(n);
     acc.add(v.vertex(), FT(1) - FT(n) * beta);
@@ -71,23 +82,17 @@ public:
   }
 
   template <class Accumulator>
-  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
+  static void smooth_edge_point(const Edge_view<Mesh>& e, Accumulator& acc)
   {
     const Mesh& mesh = e.mesh();
     const halfedge_descriptor h = e.halfedge();
-    if(e.on_border()) {
-      m_border.edge_point(mesh, h, acc);
-      return;
-    }
     acc.add(source(h, mesh), FT(3) / FT(8));
     acc.add(target(h, mesh), FT(3) / FT(8));
     acc.add(target(next(h, mesh), mesh), FT(1) / FT(8));
     acc.add(target(next(opposite(h, mesh), mesh), mesh), FT(1) / FT(8));
   }
 
-private:
   Border_corners m_corners;
-  Border_curve_rule<FT> m_border;
 };
 
 /*!

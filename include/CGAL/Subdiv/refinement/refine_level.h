@@ -155,6 +155,16 @@ public:
     return m_elements;
   }
 
+  /// new edge k: the edge of new halfedge ids 2k and 2k + 1
+  typename boost::graph_traits<Mesh>::edge_descriptor edge(std::size_t k, const Mesh& mesh) const
+  {
+    if constexpr(Mesh_numbering<Mesh>::dense) { // a Surface_mesh: new edge k is index k
+      (void)mesh;
+      return typename Mesh::Edge_index(static_cast<typename Mesh::size_type>(k));
+    } else
+      return CGAL::edge(m_elements.halfedges[2 * k], mesh);
+  }
+
   /// the parent (old face ordinal) of every new face, by new index
   std::vector<std::size_t> parents() const
   {

@@ -64,12 +64,14 @@ void clear_keeping_properties(CGAL::Surface_mesh<Point>& mesh)
   mesh.clear_without_removing_property_maps();
 }
 
-/// the descriptors of the new vertices and faces, by new index
+/// the descriptors of the new vertices, faces and halfedges, by new index
+/// (the halfedges only where the mesh is rebuilt element by element)
 template <class Mesh>
 struct New_elements
 {
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertices;
   std::vector<typename boost::graph_traits<Mesh>::face_descriptor> faces;
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> halfedges;
 };
 
 /*
@@ -117,6 +119,7 @@ New_elements<Mesh> rebuild_mesh(Mesh& mesh, const VertexPointMap& vpm, const std
       set_halfedge(face, halfedge_of[c[0].halfedge], mesh);
     });
   wire_border(mesh, faces.border_halfedges(), [&](Child_index id) { return halfedge_of[id]; });
+  result.halfedges = std::move(halfedge_of);
   return result;
 }
 

@@ -15,6 +15,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <cstddef>
 #include <type_traits>
 
 namespace CGAL {
@@ -49,11 +50,33 @@ enum class Border_corners {
 /*!
  * \ingroup PkgSubdivMasks
  * The rule a vertex is refined with, as OpenSubdiv's `Sdc::Crease` names
- * them: `smooth` inside the mesh, `crease` where two sharp edges meet (a
- * border vertex: border edges are sharp), `corner` where the vertex is kept
- * (a border vertex with a single face, with `Border_corners::sharp`).
+ * them, from the number of sharp edges at the vertex (border edges are
+ * sharp) and its own sharpness: `smooth` with none, `dart` with one (refined
+ * with the smooth rule), `crease` with two, `corner` with more or where the
+ * vertex itself is sharp (with `Border_corners::sharp`, a border vertex with
+ * a single face). Without sharpness tags a vertex is smooth inside the mesh
+ * and a crease or a corner on its border.
  */
-enum class Vertex_rule { smooth, crease, corner };
+enum class Vertex_rule { smooth, dart, crease, corner };
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * What the sharpness tags of a level say about a vertex (made by
+ * `internal::Sharp_level`, read through `Vertex_view`): its rule on this
+ * level and on the next (they differ where a sharpness decays to zero in
+ * this step; the mask then blends the two rules), and the two sharp edges of
+ * each crease rule, as halfedges out of the vertex.
+ */
+template <class Mesh>
+struct Sharp_vertex
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+
+  Vertex_rule rule = Vertex_rule::smooth;
+  Vertex_rule child_rule = Vertex_rule::smooth;
+  halfedge_descriptor crease[2];
+  halfedge_descriptor child_crease[2];
+};
 
 /*!
  * \ingroup PkgSubdivMasks
@@ -99,7 +122,33 @@ public:
   {
     return on_border() ? next(m_border_in, *m_mesh) : boost::graph_traits<Mesh>::null_halfedge();
   }
-  Vertex_rule rule() const { return m_rule; }
+  /// the rule of the vertex on this level
+  Vertex_rule rule() const { return m_sharp != nullptr ? m_sharp->rule : m_rule; }
+  /// the rule of its child on the next level (different from `rule()` only
+  /// where a sharpness decays to zero in this step)
+  Vertex_rule child_rule() const { return m_sharp != nullptr ? m_sharp->child_rule : m_rule; }
+  /// the two sharp edges of the crease rule of this level (`rule()` is
+  /// `crease`), as halfedges out of the vertex; on the border, the border edges
+  halfedge_descriptor crease_out(int i) const
+  {
+    if(m_sharp != nullptr)
+      return m_sharp->crease[i];
+    return i == 0 ? border_out() : opposite(m_border_in, *m_mesh);
+  }
+  /// the same for the crease rule of the next level (`child_rule()` is `crease`)
+  halfedge_descriptor child_crease_out(int i) const
+  {
+    return m_sharp != nullptr ? m_sharp->child_crease[i] : crease_out(i);
+  }
+  /// whether sharpness tags decide the rules (`internal::Sharp_level`)
+  bool tagged() const { return m_sharp != nullptr; }
+  /// the ordinal of the vertex in the numbering of its level (tagged views only)
+  std::size_t ordinal() const { return m_ordinal; }
+  void set_sharp(const Sharp_vertex<Mesh>* sharp, std::size_t ordinal)
+  {
+    m_sharp = sharp;
+    m_ordinal = ordinal;
+  }
 
 private:
   const Mesh* m_mesh;
@@ -107,6 +156,8 @@ private:
   halfedge_descriptor m_border_in;
   int m_valence = 0;
   Vertex_rule m_rule = Vertex_rule::smooth;
+  const Sharp_vertex<Mesh>* m_sharp = nullptr;
+  std::size_t m_ordinal = 0;
 };
 
 /*!
@@ -128,6 +179,23 @@ public:
   const Mesh& mesh() const { return *m_mesh; }
   halfedge_descriptor halfedge() const { return m_halfedge; }
   bool on_border() const { return m_border; }
+  /// whether the edge is sharp on this level (a border edge, or a tagged
+  /// sharpness above 0): its edge point then follows the curve rule, blended
+  /// with the smooth rule unless `child_crease()`
+  bool sharp() const { return m_tagged ? m_sharp : m_border; }
+  /// whether both halves of the edge are sharp on the next level
+  bool child_crease() const { return m_tagged ? m_child_crease : m_border; }
+  /// whether sharpness tags decide `sharp()` (`internal::Sharp_level`)
+  bool tagged() const { return m_tagged; }
+  /// the ordinal of the edge in the numbering of its level (tagged views only)
+  std::size_t ordinal() const { return m_ordinal; }
+  void set_sharp(bool sharp, bool child_crease, std::size_t ordinal)
+  {
+    m_tagged = true;
+    m_sharp = sharp;
+    m_child_crease = child_crease;
+    m_ordinal = ordinal;
+  }
   /// the border halfedge of a border edge
   halfedge_descriptor border_halfedge() const
   {
@@ -144,6 +212,10 @@ private:
   halfedge_descriptor m_halfedge;
   Border_corners m_corners;
   bool m_border;
+  bool m_tagged = false;
+  bool m_sharp = false;
+  bool m_child_crease = false;
+  std::size_t m_ordinal = 0;
 };
 
 /*!
@@ -244,18 +316,37 @@ Border_corners border_corners_of(const Mask& mask)
 
 } // namespace internal
 
-/// the view of vertex `v` with the options of `mask` (as the hosts make it)
+namespace internal {
+
+template <class Mask, class = void>
+struct Has_sharp_level : std::false_type
+{};
+template <class Mask>
+struct Has_sharp_level<Mask, std::void_t<decltype(std::declval<const Mask&>().sharp_level())>> : std::true_type
+{};
+
+} // namespace internal
+
+/// the view of vertex `v` with the options of `mask` (as the hosts make it):
+/// with the rules its sharpness tags select, if it has some
 template <class Mask, class Mesh>
 Vertex_view<Mesh> vertex_view(const Mask& mask, const Mesh& mesh,
                               typename boost::graph_traits<Mesh>::vertex_descriptor v)
 {
+  if constexpr(internal::Has_sharp_level<Mask>::value)
+    if(mask.sharp_level() != nullptr)
+      return mask.sharp_level()->vertex_view(v);
   return Vertex_view<Mesh>(mesh, v, internal::border_corners_of(mask));
 }
 
-/// the view of the edge of `h` with the options of `mask` (as the hosts make it)
+/// the view of the edge of `h` with the options of `mask` (as the hosts make
+/// it): with the rules its sharpness tags select, if it has some
 template <class Mask, class Mesh>
 Edge_view<Mesh> edge_view(const Mask& mask, const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h)
 {
+  if constexpr(internal::Has_sharp_level<Mask>::value)
+    if(mask.sharp_level() != nullptr)
+      return mask.sharp_level()->edge_view(h);
   return Edge_view<Mesh>(mesh, h, internal::border_corners_of(mask));
 }
 

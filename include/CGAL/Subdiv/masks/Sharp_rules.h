@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_MASKS_SHARP_RULES_H
+#define CGAL_SUBDIV_MASKS_SHARP_RULES_H
+
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/views/Sharp_level.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
+
+#include <CGAL/assertions.h>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/// an accumulator that scales every weight by `scale` before passing it on
+/// (the two rules of a blend)
+template <class Accumulator, class FT>
+class Scaled_accumulator
+{
+public:
+  Scaled_accumulator(Accumulator& acc, const FT& scale) : m_acc(acc), m_scale(scale) {}
+
+  template <class VertexDescriptor, class Weight>
+  void add(VertexDescriptor v, const Weight& weight)
+  {
+    m_acc.add(v, m_scale * weight);
+  }
+
+private:
+  Accumulator& m_acc;
+  FT m_scale;
+};
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The sharp rules of a primal approximating scheme (Loop, Catmull-Clark), as
+ * OpenSubdiv applies them: a corner stays where it is, a crease vertex and a
+ * sharp edge follow the curve rule (`Border_curve_rule`, the cubic B-spline:
+ * 1/8, 6/8, 1/8 with the two crease neighbours, and the midpoint), the
+ * border being a crease; a dart follows the smooth rule. Where a vertex's
+ * rule changes between levels, or a semi-sharp edge becomes smooth, the two
+ * rules are blended with the weights of the level's sharpness tags
+ * (`internal::Sharp_level`). Without tags, the rules are the border rules.
+ *
+ * The masks keep their smooth rules, and ask these first.
+ *
+ * \tparam Mesh a model of `FaceGraph`
+ * \tparam FT the number type of the weights
+ */
+template <class Mesh, class FT>
+class Sharp_rules
+{
+public:
+  using Level = internal::Sharp_level<Mesh, FT>;
+
+  template <class CurveScheme>
+  explicit Sharp_rules(const CurveScheme& scheme) : m_curve(scheme)
+  {}
+
+  const Border_curve_rule<FT>& curve() const { return m_curve; }
+  /// the sharpness tags of the level being refined (null without tags)
+  const Level* level() const { return m_level; }
+  void set_level(const Level* level) { m_level = level; }
+
+  /// adds the vertex point of `v` if its rules are not the smooth rule alone
+  /// (`smooth(acc)` adds the mask's smooth rule, for a blend); returns
+  /// whether it did
+  template <class Accumulator, class Smooth>
+  bool vertex_point(const Vertex_view<Mesh>& v, Accumulator& acc, const Smooth& smooth) const
+  {
+    const Vertex_rule rule = v.rule();
+    if(is_smooth(rule))
+      return false;
+    const Vertex_rule child = v.child_rule();
+    if(child == rule) {
+      rule_point(v, rule, false, acc);
+      return true;
+    }
+    CGAL_assertion(m_level != nullptr);
+    const FT& weight = m_level->vertex_weight(v.ordinal());
+    internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
+    rule_point(v, rule, false, sharp);
+    if(is_smooth(child))
+      smooth(next);
+    else
+      rule_point(v, child, true, next);
+    return true;
+  }
+
+  /// adds the vertex point of `v`: its sharp rules, or else `smooth(acc)`
+  template <class Accumulator, class Smooth>
+  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc, const Smooth& smooth) const
+  {
+    if(!vertex_point(v, acc, smooth))
+      smooth(acc);
+  }
+
+  /// adds the edge point of `e`: its sharp rules, or else `smooth(acc)`
+  template <class Accumulator, class Smooth>
+  void edge_node(const Edge_view<Mesh>& e, Accumulator& acc, const Smooth& smooth) const
+  {
+    if(!edge_point(e, acc, smooth))
+      smooth(acc);
+  }
+
+  /// adds the edge point of `e` if it is sharp (`smooth(acc)` adds the mask's
+  /// smooth rule, for a blend); returns whether it did
+  template <class Accumulator, class Smooth>
+  bool edge_point(const Edge_view<Mesh>& e, Accumulator& acc, const Smooth& smooth) const
+  {
+    if(!e.sharp())
+      return false;
+    if(e.child_crease()) {
+      m_curve.edge_point(e.mesh(), e.halfedge(), acc);
+      return true;
+    }
+    CGAL_assertion(m_level != nullptr);
+    const FT weight = m_level->edge_weight(e.ordinal());
+    internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
+    m_curve.edge_point(e.mesh(), e.halfedge(), sharp);
+    smooth(next);
+    return true;
+  }
+
+private:
+  static bool is_smooth(Vertex_rule rule) { return rule == Vertex_rule::smooth || rule == Vertex_rule::dart; }
+
+  // the crease or corner rule of v, with the crease of this level or of the next
+  template <class Accumulator>
+  void rule_point(const Vertex_view<Mesh>& v, Vertex_rule rule, bool next_level, Accumulator& acc) const
+  {
+    if(rule == Vertex_rule::corner) {
+      acc.add(v.vertex(), FT(1));
+      return;
+    }
+    if(v.on_border()) { // a crease on the border is the border itself
+      m_curve.vertex_point(v, acc);
+      return;
+    }
+    const auto out0 = next_level ? v.child_crease_out(0) : v.crease_out(0);
+    const auto out1 = next_level ? v.child_crease_out(1) : v.crease_out(1);
+    // as on the border: the vertex first, then the others by increasing offset
+    for(const auto& term : m_curve.even())
+      if(term.first == 0)
+        acc.add(v.vertex(), term.second);
+    for(const auto& term : m_curve.even()) {
+      // the curve rules of the primal schemes reach the crease neighbours only
+      CGAL_assertion(term.first >= -1 && term.first <= 1);
+      if(term.first != 0)
+        acc.add(target(term.first < 0 ? out0 : out1, v.mesh()), term.second);
+    }
+  }
+
+  Border_curve_rule<FT> m_curve;
+  const Level* m_level = nullptr;
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The base of a mask that refines with sharpness tags (`Loop_mask`,
+ * `Catmull_clark_mask`): it holds the mask's `Sharp_rules`, and gives the
+ * members through which `subdivide()` hands the mask the tags of each level
+ * (`sharp_level()`, `with_sharp_level()`).
+ *
+ * \tparam Mask the mask (CRTP)
+ */
+template <class Mask, class Mesh, class FT>
+class With_sharp_rules
+{
+public:
+  /// the sharpness tags of the level being refined (null: none)
+  const internal::Sharp_level<Mesh, FT>* sharp_level() const { return m_sharp.level(); }
+
+  /// the same rules with the sharpness tags of a level
+  Mask with_sharp_level(const internal::Sharp_level<Mesh, FT>* level) const
+  {
+    Mask mask(static_cast<const Mask&>(*this));
+    static_cast<With_sharp_rules&>(mask).m_sharp.set_level(level);
+    return mask;
+  }
+
+protected:
+  /// the sharp rules along the curve scheme `scheme` (its even and odd rules)
+  template <class CurveScheme>
+  explicit With_sharp_rules(const CurveScheme& scheme) : m_sharp(scheme)
+  {}
+
+  Sharp_rules<Mesh, FT> m_sharp;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_MASKS_SHARP_RULES_H
