@@ -305,9 +305,35 @@ subdiv_cli_test(surface_coff_short_colour ARGS surface ${hostile}/coff_short_col
 subdiv_cli_test(surface_unreferenced_vertices ARGS surface ${hostile}/unreferenced.off ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off VERTICES 6 FACES 4
   STDERR_REGEX "note: dropped the 2 vertices of '[^']*unreferenced.off' that no face uses \\(of 5\\)")
+# the crease tag is read (on a border edge, which is sharp anyway): only the vt lines are noted
 subdiv_cli_test(surface_obj_uv_and_tags ARGS surface ${hostile}/uv_and_tags.obj ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off FACES 4
-  STDERR_REGEX "note: ignored 3 texture coordinates \\(vt\\) of .*note: ignored 1 tag line \\(t\\) of '[^']*uv_and_tags.obj': creases, corners and holes are not supported yet")
+  STDERR_REGEX "^cgal-subdiv: note: ignored 3 texture coordinates \\(vt\\) of '[^']*uv_and_tags.obj'[^\n]*\n$")
+
+# --- OpenSubdiv's OBJ tags (doc/sharp_features.md) ------------------------------
+# read, refined with, and written back for the children: of the cube's 12
+# creases (catmark_cube_creases1), the 11 of sharpness 5 become 22 halves of
+# sharpness 4, the one of 0.1 is smooth one level down
+subdiv_cli_test(surface_obj_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj
+  -o @WORK@/out.obj --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt interpolateboundary 1/0/0 2\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$"
+  FILE_NOT_REGEX "t corner")
+foreach(bad
+    "crease_not_an_edge|line 7: tag 'crease': vertices 1 and 3 are not joined by an edge of the mesh"
+    "negative_sharpness|line 7: tag 'crease': the sharpness -1.000000 is negative or NaN"
+    "vertex_out_of_range|line 7: tag 'corner': vertex 7 is out of range \\(the file has 4 vertices, numbered from 0 in tags\\)"
+    "odd_crease|line 7: tag 'crease': needs pairs of vertices, got 3 numbers"
+    "bad_interpolateboundary|line 7: tag 'interpolateboundary': is 0 \\(none\\), 1 \\(edges and corners\\) or 2 \\(edges only\\), not 5")
+  string(REPLACE "|" ";" parts "${bad}")
+  list(GET parts 0 file)
+  list(GET parts 1 message)
+  subdiv_surface_error(surface_tag_${file} 1 "'[^']*tag_${file}.obj' ${message}"
+    ARGS surface ${hostile}/tag_${file}.obj ${mesh_out} --scheme loop --levels 1)
+endforeach()
+subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
 
 # --- SIGTERM while writing removes the temporary file ---------------------------
 find_program(SUBDIV_SH sh)

@@ -104,6 +104,17 @@ Surface read_surface(const std::string& path, bool repair, std::vector<std::stri
   return surface_from_soup(read_mesh_soup(path, format), path, format, repair, notes, file_numbers);
 }
 
+Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+                     std::vector<std::size_t>* file_numbers, File_tags& tags)
+{
+  const Mesh_format format = mesh_format(path, "INPUT");
+  Mesh_soup soup = read_mesh_soup(path, format);
+  tags.tags = std::move(soup.tags);
+  soup.tags.clear();
+  tags.file_vertices = soup.points.size();
+  return surface_from_soup(soup, path, format, repair, notes, file_numbers);
+}
+
 Largest_coordinate largest_coordinate(const Surface& mesh)
 {
   Largest_coordinate largest;
@@ -217,7 +228,7 @@ void write_stl(const Surface& triangles, std::ostream& out, bool binary, const s
 
 } // namespace
 
-void write_surface(const Surface& mesh, const std::string& path, bool binary)
+void write_surface(const Surface& mesh, const std::string& path, bool binary, const Sharp_options* tags)
 {
   const Mesh_format format = mesh_format(path, "OUTPUT");
   if(binary && format != Mesh_format::ply && format != Mesh_format::stl)
@@ -234,6 +245,8 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary)
         break;
       case Mesh_format::obj:
         ok = CGAL::IO::write_OBJ(out, mesh, np);
+        if(ok && tags != nullptr)
+          write_obj_tags(out, mesh, *tags);
         break;
       case Mesh_format::ply:
         if(binary)
@@ -270,8 +283,18 @@ void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int le
 }
 
 Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
-                                 const Level_callback& on_level)
+                                 const Level_callback& on_level, const Sharp_options* tags)
 {
+  if(tags != nullptr && !scheme.run_sharp)
+    throw Input_error("--scheme " + scheme.name +
+                      " does not take OpenSubdiv's crease, corner and boundary tags yet (loop, loop-warren and "
+                      "catmull-clark do)");
+  const auto run = [&](int n) {
+    if(tags != nullptr)
+      scheme.run_sharp(mesh, n, max_memory, *tags);
+    else
+      scheme.run(mesh, n, max_memory);
+  };
   Surface_result result;
   result.in = counts(mesh);
   // refuse before any work (the library would refuse too, level by level)
@@ -281,11 +304,11 @@ Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, in
   const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   if(on_level && scheme.level_by_level && levels > 1) {
     for(int level = 1; level <= levels; ++level) {
-      scheme.run(mesh, 1, max_memory);
+      run(1);
       on_level(level, counts(mesh), seconds());
     }
   } else {
-    scheme.run(mesh, levels, max_memory);
+    run(levels);
     if(on_level && levels > 0)
       on_level(levels, counts(mesh), seconds());
   }

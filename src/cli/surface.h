@@ -9,6 +9,7 @@
 #include "common.h"
 #include "mesh_soup.h"
 #include "surface_from_soup.h"
+#include "surface_tags.h"
 
 #include <CGAL/Surface_mesh.h>
 
@@ -38,6 +39,9 @@ struct Surface_scheme
   /// checks again): the host's own numbers
   double face_growth = 4;
   double bytes_per_face = 100;
+  /// refines with the sharpness maps of the mesh (surface_tags.h) and the
+  /// options of the tags; empty for the schemes that do not take tags
+  std::function<void(Surface& mesh, int levels, double max_memory, const Sharp_options& options)> run_sharp;
 };
 
 /// every scheme this build offers, in the order of --help
@@ -77,6 +81,18 @@ std::string describe(const Mesh_counts& counts);
 Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
                      std::vector<std::size_t>* file_numbers = nullptr);
 
+/// the tag lines (t) of an OBJ file, and the number of vertices of the file
+struct File_tags
+{
+  std::vector<Obj_tag> tags;
+  std::size_t file_vertices = 0;
+};
+
+/// `read_surface` that also hands over the tag lines, which are then not
+/// noted as ignored
+Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+                     std::vector<std::size_t>* file_numbers, File_tags& tags);
+
 /// the largest coordinate (in magnitude) of a mesh, and where it is
 struct Largest_coordinate
 {
@@ -100,7 +116,10 @@ void check_finite_result(const Surface& result, const std::string& what, const s
 /// significant digits or, with `binary`, binary PLY or STL (STL's 32-bit
 /// floats), under a temporary name renamed at the end;
 /// \throws Input_error, or Usage_error for `binary` with OFF or OBJ
-void write_surface(const Surface& mesh, const std::string& path, bool binary = false);
+/// writes `mesh` (with `tags`, an OBJ file also gets the sharpness maps and
+/// the options as OpenSubdiv's tag lines)
+void write_surface(const Surface& mesh, const std::string& path, bool binary = false,
+                   const Sharp_options* tags = nullptr);
 
 /// one line of progress: level (1-based), mesh after it, seconds since start
 using Level_callback = std::function<void(int level, const Mesh_counts& counts, double seconds)>;
@@ -125,10 +144,13 @@ void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int le
  * fits in `max_memory` bytes (0: this machine's memory; negative levels and
  * too large outputs are refused before any work). If `on_level` is set and
  * the scheme allows it, runs level by level and calls it after each level.
- * \throws CGAL::Subdiv::Bad_input when the scheme does not apply
+ * With `tags`, refines with the sharpness maps of the mesh (`run_sharp`).
+ * \throws CGAL::Subdiv::Bad_input when the scheme does not apply;
+ *         Input_error when there are tags and the scheme does not take them
  */
 Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
-                                 const Level_callback& on_level = Level_callback());
+                                 const Level_callback& on_level = Level_callback(),
+                                 const Sharp_options* tags = nullptr);
 
 } // namespace cgal_subdiv
 

@@ -31,6 +31,12 @@ writing not included).
                         be a manifold polygon mesh (borders allowed); if it is
                         not, the error names the edge or vertex at fault.
                         Colours, normals and other properties are ignored.
+                        OpenSubdiv's OBJ tags are read: t crease, t corner
+                        (vertices from 0), t interpolateboundary (RenderMan's
+                        numbers: 1 edges and corners, 2 edges only, 0 read as
+                        2) and t creasemethod (normal or chaikin), for loop,
+                        loop-warren and catmull-clark; an OBJ OUTPUT gets the
+                        children's tags. Other tags are ignored, with a note.
   -o, --output OUTPUT   OFF, OBJ, PLY or STL (from the extension), ASCII, 17
                         significant digits; STL holds triangles, so other faces
                         are split into triangles there. Written to a temporary
@@ -161,7 +167,20 @@ int surface_command(const std::vector<std::string>& arguments)
 
   std::vector<std::string> notes;
   std::vector<std::size_t> file_numbers;
-  Surface mesh = read_surface(input, args.has("--repair"), notes, &file_numbers);
+  File_tags file_tags;
+  Surface mesh = read_surface(input, args.has("--repair"), notes, &file_numbers, file_tags);
+  // OpenSubdiv's tags (OBJ): the sharpness maps of the mesh and the options
+  Sharp_options sharp_options;
+  if(!file_tags.tags.empty() && args.has("--repair"))
+    notes.push_back("ignored the " + std::to_string(file_tags.tags.size()) + " tag lines (t) of '" + input +
+                    "': --repair renumbers the vertices they name");
+  else if(!file_tags.tags.empty())
+    sharp_options = apply_obj_tags(file_tags.tags, file_tags.file_vertices, mesh, file_numbers, input, notes);
+  const bool tagged = sharp_options.present;
+  if(tagged && (displace || args.has("--limit")))
+    throw Input_error("'" + input +
+                      "' has crease, corner or boundary tags: --limit and --displace do not take "
+                      "them yet");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();
@@ -181,7 +200,8 @@ int surface_command(const std::vector<std::string>& arguments)
   if(displace) {
     result = displace_surface(mesh, scheme, levels, max_memory, heights);
   } else {
-    result = subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback());
+    result = subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback(),
+                               tagged ? &sharp_options : nullptr);
     if(args.has("--limit")) {
       const auto start = std::chrono::steady_clock::now();
       project_surface_to_limit(mesh, scheme);
@@ -195,7 +215,7 @@ int surface_command(const std::vector<std::string>& arguments)
   check_finite_result(mesh, step, input, largest, file_numbers);
   if(talking)
     std::cerr << "cgal-subdiv: writing " << output << std::endl;
-  write_surface(mesh, output, args.has("--binary"));
+  write_surface(mesh, output, args.has("--binary"), tagged ? &sharp_options : nullptr);
 
   for(const std::string& note : notes)
     std::cerr << "cgal-subdiv: note: " << note << '\n';

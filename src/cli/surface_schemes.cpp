@@ -3,6 +3,7 @@
 //
 // The one table of surface schemes of cgal-subdiv: a scheme is one line here.
 #include "surface.h"
+#include "surface_tags.h"
 
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -33,12 +34,26 @@ const auto linear = call([](Surface& m, const auto& np) {
 });
 
 // a row of the table: the growth per level and the peak bytes per face come
-// from the host of the scheme's mask (the library's own size check)
+// from the host of the scheme's mask (the library's own size check); the
+// masks that take sharpness tags refine with the mesh's maps (surface_tags.h)
 template <class Mask>
 Surface_scheme row(const std::string& name, const std::string& description, const Run& run, bool triangles_only)
 {
   using Host = SD::Host_of<Mask>;
-  return Surface_scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face()};
+  Surface_scheme scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face(),
+                        {}};
+  if constexpr(SD::internal::Has_sharp_level<Mask>::value)
+    scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
+      const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
+      const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
+      SD::subdivide(mesh, Mask(options.border),
+                    SD::parameters::number_of_iterations(levels)
+                      .max_memory(max_memory)
+                      .edge_sharpness_map(edges)
+                      .vertex_sharpness_map(vertices)
+                      .crease_method(options.method));
+    };
+  return scheme;
 }
 
 } // namespace
