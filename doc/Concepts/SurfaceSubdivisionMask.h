@@ -119,16 +119,15 @@ public:
   /// `Dual_split` and `Sqrt3_split` do not read it.
   CGAL::Subdiv::Border_corners border_corners() const;
 
-  /// optional, with `with_sharp_level()`: the sharpness tags of the level
-  /// being refined (null without tags). When the mask has it,
-  /// `Triangle_quadrisection` and `Quad_split` build their views from the
-  /// tags (the rules of `Sharp_rules`), and `subdivide()` accepts
-  /// `edge_sharpness_map` and `vertex_sharpness_map`; `Loop_mask` and
-  /// `Catmull_clark_mask` have it.
-  const unspecified_type* sharp_level() const;
-
-  /// optional: a copy of the mask that refines with the tags of `level`
-  SurfaceSubdivisionMask with_sharp_level(const unspecified_type* level) const;
+  /// optional: a copy of the mask that refines with the sharpness tags of
+  /// `level` (made by `subdivide()` for each level). When the mask has it,
+  /// `subdivide()` accepts `edge_sharpness_map` and `vertex_sharpness_map`;
+  /// `Loop_mask` and `Catmull_clark_mask` have it (`With_sharp_rules`). The
+  /// copy is of another type, whose `refines_with_tags` is true and whose
+  /// `sharp_level()` gives the tags: `Triangle_quadrisection` and
+  /// `Quad_split` then build their views from them (the rules of
+  /// `Sharp_rules`). Masks without tags compile only their border rules.
+  unspecified_type with_sharp_level(const unspecified_type* level) const;
 
   /// @}
 

@@ -42,7 +42,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   using Host = SD::Host_of<Mask>;
   Surface_scheme scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face(),
                         {}};
-  if constexpr(SD::internal::Has_sharp_level<Mask>::value)
+  if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
       const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;

@@ -30,7 +30,7 @@ namespace internal {
 template <class PolygonMesh, class Mask, class NamedParameters, class RefineOne>
 void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np, const RefineOne& refine_one)
 {
-  static_assert(Has_sharp_level<Mask>::value,
+  static_assert(Takes_sharpness_tags<Mask>::value,
                 "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
   using parameters::get_parameter;
   using parameters::is_default_parameter;
@@ -150,7 +150,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   // level if there are some) and `sinks`; the carried path (rows recorded per
   // level) is compiled only where carried_data is passed: a plain program
   // does not pay for it
-  const auto refine_one = [&](const Mask& level_mask, auto&... sinks) {
+  const auto refine_one = [&](const auto& level_mask, auto&... sinks) {
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
       using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
       if(carried) { // the points from the recorded stencils, as the data

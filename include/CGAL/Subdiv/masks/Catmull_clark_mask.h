@@ -50,10 +50,12 @@ namespace Subdiv {
  *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (`With_sharp_rules`): `subdivide()` makes such copies, users leave it false
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Catmull_clark_mask : public With_sharp_rules<Catmull_clark_mask<Mesh, FT>, Mesh, FT>
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Catmull_clark_mask : public With_sharp_rules<Catmull_clark_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -64,14 +66,15 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth)
-    : With_sharp_rules<Catmull_clark_mask, Mesh, FT>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
+    : With_sharp_rules<Catmull_clark_mask, Mesh, FT, Tagged>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
   {}
 
-  /// the same rules, with the same options, for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Catmull_clark_mask<OtherMesh, OtherFT> rebind() const
+  /// the same rules, with the same options, for another mesh type and number
+  /// type (without the tags of a level)
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Catmull_clark_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Catmull_clark_mask<OtherMesh, OtherFT>(m_corners);
+    return Catmull_clark_mask<OtherMesh, OtherFT, OtherTagged>(m_corners);
   }
 
   std::string name() const { return "Catmull-Clark"; }

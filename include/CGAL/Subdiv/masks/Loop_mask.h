@@ -32,10 +32,12 @@ namespace Subdiv {
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
  * \tparam Beta `Loop_beta` or `Warren_beta`
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (`With_sharp_rules`): `subdivide()` makes such copies, users leave it false
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>, class Beta = Loop_beta>
-class Loop_mask : public With_sharp_rules<Loop_mask<Mesh, FT, Beta>, Mesh, FT>
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, class Beta = Loop_beta, bool Tagged = false>
+class Loop_mask : public With_sharp_rules<Loop_mask<Mesh, FT, Beta, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -44,14 +46,15 @@ public:
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   explicit Loop_mask(Border_corners corners = Border_corners::smooth)
-    : With_sharp_rules<Loop_mask<Mesh, FT, Beta>, Mesh, FT>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
+    : With_sharp_rules<Loop_mask, Mesh, FT, Tagged>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
   {}
 
-  /// the same rules, with the same options, for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Loop_mask<OtherMesh, OtherFT, Beta> rebind() const
+  /// the same rules, with the same options, for another mesh type and number
+  /// type (without the tags of a level)
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Loop_mask<OtherMesh, OtherFT, Beta, OtherTagged> rebind() const
   {
-    return Loop_mask<OtherMesh, OtherFT, Beta>(m_corners);
+    return Loop_mask<OtherMesh, OtherFT, Beta, OtherTagged>(m_corners);
   }
 
   std::string name() const { return "Loop (" + Beta::name() + " beta)"; }

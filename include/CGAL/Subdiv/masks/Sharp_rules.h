@@ -4,7 +4,6 @@
 #define CGAL_SUBDIV_MASKS_SHARP_RULES_H
 
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
-#include <CGAL/Subdiv/views/Sharp_level.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <CGAL/assertions.h>
@@ -12,6 +11,11 @@
 namespace CGAL {
 namespace Subdiv {
 namespace internal {
+
+// defined in views/Sharp_level.h, which only the tagged refinement includes
+// (subdivide.h): a plain program does not compile the tags
+template <class Mesh, class FT>
+class Sharp_level;
 
 /// an accumulator that scales every weight by `scale` before passing it on
 /// (the two rules of a blend)
@@ -49,8 +53,11 @@ private:
  *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights
+ * \tparam Tagged whether the views come from sharpness tags. Without them a
+ * vertex is sharp only on the border and its rule never changes between
+ * levels, so neither the interior creases nor the blends are compiled.
  */
-template <class Mesh, class FT>
+template <class Mesh, class FT, bool Tagged = false>
 class Sharp_rules
 {
 public:
@@ -74,19 +81,15 @@ public:
     const Vertex_rule rule = v.rule();
     if(is_smooth(rule))
       return false;
-    const Vertex_rule child = v.child_rule();
-    if(child == rule) {
-      rule_point(v, rule, false, acc);
-      return true;
-    }
-    CGAL_assertion(m_level != nullptr);
-    const FT& weight = m_level->vertex_weight(v.ordinal());
-    internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
-    rule_point(v, rule, false, sharp);
-    if(is_smooth(child))
-      smooth(next);
-    else
-      rule_point(v, child, true, next);
+    if constexpr(Tagged) {
+      const Vertex_rule child = v.child_rule();
+      if(child != rule) {
+        blend(v, rule, child, acc, smooth);
+        return true;
+      }
+    } else
+      (void)smooth;
+    rule_point(v, rule, false, acc);
     return true;
   }
 
@@ -113,20 +116,39 @@ public:
   {
     if(!e.sharp())
       return false;
-    if(e.child_crease()) {
-      m_curve.edge_point(e.mesh(), e.halfedge(), acc);
-      return true;
-    }
-    CGAL_assertion(m_level != nullptr);
-    const FT weight = m_level->edge_weight(e.ordinal());
-    internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
-    m_curve.edge_point(e.mesh(), e.halfedge(), sharp);
-    smooth(next);
+    if constexpr(Tagged) {
+      if(!e.child_crease()) { // semi-sharp, smooth on the next level
+        CGAL_assertion(m_level != nullptr);
+        const FT weight = m_level->edge_weight(e.ordinal());
+        internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
+        m_curve.edge_point(e.mesh(), e.halfedge(), sharp);
+        smooth(next);
+        return true;
+      }
+    } else
+      (void)smooth;
+    m_curve.edge_point(e.mesh(), e.halfedge(), acc);
     return true;
   }
 
 private:
   static bool is_smooth(Vertex_rule rule) { return rule == Vertex_rule::smooth || rule == Vertex_rule::dart; }
+
+  // the rule of this level blended with the one of the next (tagged views):
+  // the vertex weight of the level for the first, the rest for the second
+  template <class Accumulator, class Smooth>
+  void blend(const Vertex_view<Mesh>& v, Vertex_rule rule, Vertex_rule child, Accumulator& acc,
+             const Smooth& smooth) const
+  {
+    CGAL_assertion(m_level != nullptr);
+    const FT& weight = m_level->vertex_weight(v.ordinal());
+    internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
+    rule_point(v, rule, false, sharp);
+    if(is_smooth(child))
+      smooth(next);
+    else
+      rule_point(v, child, true, next);
+  }
 
   // the crease or corner rule of v, with the crease of this level or of the next
   template <class Accumulator>
@@ -136,10 +158,19 @@ private:
       acc.add(v.vertex(), FT(1));
       return;
     }
-    if(v.on_border()) { // a crease on the border is the border itself
-      m_curve.vertex_point(v, acc);
-      return;
-    }
+    if constexpr(Tagged) // without tags, a crease is on the border
+      if(!v.on_border()) {
+        crease_point(v, next_level, acc);
+        return;
+      }
+    (void)next_level;
+    m_curve.vertex_point(v, acc); // a crease on the border is the border itself
+  }
+
+  // the curve rule along the two sharp edges of a crease inside the mesh
+  template <class Accumulator>
+  void crease_point(const Vertex_view<Mesh>& v, bool next_level, Accumulator& acc) const
+  {
     const auto out0 = next_level ? v.child_crease_out(0) : v.crease_out(0);
     const auto out1 = next_level ? v.child_crease_out(1) : v.crease_out(1);
     // as on the border: the vertex first, then the others by increasing offset
@@ -163,22 +194,31 @@ private:
  * The base of a mask that refines with sharpness tags (`Loop_mask`,
  * `Catmull_clark_mask`): it holds the mask's `Sharp_rules`, and gives the
  * members through which `subdivide()` hands the mask the tags of each level
- * (`sharp_level()`, `with_sharp_level()`).
+ * (`with_sharp_level()`, `sharp_level()`).
+ *
+ * The tagged copy is a mask of its own type (`Tagged` true, made by the
+ * mask's `rebind<Mesh, FT, true>()`), so that a program that passes no tags
+ * compiles only the border rules.
  *
  * \tparam Mask the mask (CRTP)
+ * \tparam Tagged whether the mask refines with the tags of a level
  */
-template <class Mask, class Mesh, class FT>
+template <class Mask, class Mesh, class FT, bool Tagged>
 class With_sharp_rules
 {
 public:
-  /// the sharpness tags of the level being refined (null: none)
+  /// whether the views of the mask come from the sharpness tags of a level
+  static constexpr bool refines_with_tags = Tagged;
+
+  /// the sharpness tags of the level being refined (tagged masks only)
   const internal::Sharp_level<Mesh, FT>* sharp_level() const { return m_sharp.level(); }
 
-  /// the same rules with the sharpness tags of a level
-  Mask with_sharp_level(const internal::Sharp_level<Mesh, FT>* level) const
+  /// the same rules with the sharpness tags of a level (a tagged mask)
+  auto with_sharp_level(const internal::Sharp_level<Mesh, FT>* level) const
   {
-    Mask mask(static_cast<const Mask&>(*this));
-    static_cast<With_sharp_rules&>(mask).m_sharp.set_level(level);
+    auto mask = static_cast<const Mask&>(*this).template rebind<Mesh, FT, true>();
+    using Tagged_mask = decltype(mask);
+    static_cast<With_sharp_rules<Tagged_mask, Mesh, FT, true>&>(mask).m_sharp.set_level(level);
     return mask;
   }
 
@@ -188,7 +228,11 @@ protected:
   explicit With_sharp_rules(const CurveScheme& scheme) : m_sharp(scheme)
   {}
 
-  Sharp_rules<Mesh, FT> m_sharp;
+  Sharp_rules<Mesh, FT, Tagged> m_sharp;
+
+private:
+  template <class, class, class, bool>
+  friend class With_sharp_rules;
 };
 
 } // namespace Subdiv

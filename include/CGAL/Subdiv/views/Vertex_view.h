@@ -318,36 +318,50 @@ Border_corners border_corners_of(const Mask& mask)
 
 namespace internal {
 
+/// whether `subdivide()` takes sharpness tags for the mask (it has
+/// `with_sharp_level()`)
 template <class Mask, class = void>
-struct Has_sharp_level : std::false_type
+struct Takes_sharpness_tags : std::false_type
 {};
 template <class Mask>
-struct Has_sharp_level<Mask, std::void_t<decltype(std::declval<const Mask&>().sharp_level())>> : std::true_type
+struct Takes_sharpness_tags<Mask, std::void_t<decltype(std::declval<const Mask&>().with_sharp_level(nullptr))>>
+  : std::true_type
+{};
+
+/// whether the mask is a tagged copy (`With_sharp_rules`): its views come
+/// from the tags of its level
+template <class Mask, class = void>
+struct Refines_with_tags : std::false_type
+{};
+template <class Mask>
+struct Refines_with_tags<Mask, std::enable_if_t<Mask::refines_with_tags>> : std::true_type
 {};
 
 } // namespace internal
 
 /// the view of vertex `v` with the options of `mask` (as the hosts make it):
-/// with the rules its sharpness tags select, if it has some
+/// with the rules its sharpness tags select, if it is a tagged copy
 template <class Mask, class Mesh>
 Vertex_view<Mesh> vertex_view(const Mask& mask, const Mesh& mesh,
                               typename boost::graph_traits<Mesh>::vertex_descriptor v)
 {
-  if constexpr(internal::Has_sharp_level<Mask>::value)
-    if(mask.sharp_level() != nullptr)
-      return mask.sharp_level()->vertex_view(v);
-  return Vertex_view<Mesh>(mesh, v, internal::border_corners_of(mask));
+  if constexpr(internal::Refines_with_tags<Mask>::value) {
+    (void)mesh;
+    return mask.sharp_level()->vertex_view(v);
+  } else
+    return Vertex_view<Mesh>(mesh, v, internal::border_corners_of(mask));
 }
 
 /// the view of the edge of `h` with the options of `mask` (as the hosts make
-/// it): with the rules its sharpness tags select, if it has some
+/// it): with the rules its sharpness tags select, if it is a tagged copy
 template <class Mask, class Mesh>
 Edge_view<Mesh> edge_view(const Mask& mask, const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h)
 {
-  if constexpr(internal::Has_sharp_level<Mask>::value)
-    if(mask.sharp_level() != nullptr)
-      return mask.sharp_level()->edge_view(h);
-  return Edge_view<Mesh>(mesh, h, internal::border_corners_of(mask));
+  if constexpr(internal::Refines_with_tags<Mask>::value) {
+    (void)mesh;
+    return mask.sharp_level()->edge_view(h);
+  } else
+    return Edge_view<Mesh>(mesh, h, internal::border_corners_of(mask));
 }
 
 /// the view of face `f` with the options of `mask` (as the hosts make it)
