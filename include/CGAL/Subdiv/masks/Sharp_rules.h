@@ -72,63 +72,45 @@ public:
   const Level* level() const { return m_level; }
   void set_level(const Level* level) { m_level = level; }
 
-  /// adds the vertex point of `v` if its rules are not the smooth rule alone
-  /// (`smooth(acc)` adds the mask's smooth rule, for a blend); returns
-  /// whether it did
-  template <class Accumulator, class Smooth>
-  bool vertex_point(const Vertex_view<Mesh>& v, Accumulator& acc, const Smooth& smooth) const
-  {
-    const Vertex_rule rule = v.rule();
-    if(is_smooth(rule))
-      return false;
-    if constexpr(Tagged) {
-      const Vertex_rule child = v.child_rule();
-      if(child != rule) {
-        blend(v, rule, child, acc, smooth);
-        return true;
-      }
-    } else
-      (void)smooth;
-    rule_point(v, rule, false, acc);
-    return true;
-  }
-
-  /// adds the vertex point of `v`: its sharp rules, or else `smooth(acc)`
+  /// adds the vertex point of `v`: the rule it has on this level, blended
+  /// with the rule of the next where the two differ; `smooth(acc)` adds the
+  /// mask's smooth rule (smooth vertices and darts)
   template <class Accumulator, class Smooth>
   void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc, const Smooth& smooth) const
   {
-    if(!vertex_point(v, acc, smooth))
+    const Vertex_rule rule = v.rule();
+    if(is_smooth(rule)) { // a sharpness never grows, so its child is smooth too
       smooth(acc);
+      return;
+    }
+    if constexpr(Tagged)
+      if(v.child_rule() != rule) {
+        blend(v, rule, v.child_rule(), acc, smooth);
+        return;
+      }
+    rule_point(v, rule, false, acc);
   }
 
-  /// adds the edge point of `e`: its sharp rules, or else `smooth(acc)`
+  /// adds the edge point of `e`: the curve rule if it is sharp, blended with
+  /// `smooth(acc)` (the mask's smooth rule) where it is smooth on the next
+  /// level, and else the smooth rule alone
   template <class Accumulator, class Smooth>
   void edge_node(const Edge_view<Mesh>& e, Accumulator& acc, const Smooth& smooth) const
   {
-    if(!edge_point(e, acc, smooth))
+    if(!e.sharp()) {
       smooth(acc);
-  }
-
-  /// adds the edge point of `e` if it is sharp (`smooth(acc)` adds the mask's
-  /// smooth rule, for a blend); returns whether it did
-  template <class Accumulator, class Smooth>
-  bool edge_point(const Edge_view<Mesh>& e, Accumulator& acc, const Smooth& smooth) const
-  {
-    if(!e.sharp())
-      return false;
-    if constexpr(Tagged) {
+      return;
+    }
+    if constexpr(Tagged)
       if(!e.child_crease()) { // semi-sharp, smooth on the next level
         CGAL_assertion(m_level != nullptr);
         const FT weight = m_level->edge_weight(e.ordinal());
         internal::Scaled_accumulator<Accumulator, FT> sharp(acc, weight), next(acc, FT(1) - weight);
         m_curve.edge_point(e.mesh(), e.halfedge(), sharp);
         smooth(next);
-        return true;
+        return;
       }
-    } else
-      (void)smooth;
     m_curve.edge_point(e.mesh(), e.halfedge(), acc);
-    return true;
   }
 
 private:

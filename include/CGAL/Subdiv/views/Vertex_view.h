@@ -140,8 +140,6 @@ public:
   {
     return m_sharp != nullptr ? m_sharp->child_crease[i] : crease_out(i);
   }
-  /// whether sharpness tags decide the rules (`internal::Sharp_level`)
-  bool tagged() const { return m_sharp != nullptr; }
   /// the ordinal of the vertex in the numbering of its level (tagged views only)
   std::size_t ordinal() const { return m_ordinal; }
   void set_sharp(const Sharp_vertex<Mesh>* sharp, std::size_t ordinal)
@@ -185,8 +183,6 @@ public:
   bool sharp() const { return m_tagged ? m_sharp : m_border; }
   /// whether both halves of the edge are sharp on the next level
   bool child_crease() const { return m_tagged ? m_child_crease : m_border; }
-  /// whether sharpness tags decide `sharp()` (`internal::Sharp_level`)
-  bool tagged() const { return m_tagged; }
   /// the ordinal of the edge in the numbering of its level (tagged views only)
   std::size_t ordinal() const { return m_ordinal; }
   void set_sharp(bool sharp, bool child_crease, std::size_t ordinal)
