@@ -325,13 +325,36 @@ foreach(bad
     "negative_sharpness|line 7: tag 'crease': the sharpness -1.000000 is negative or NaN"
     "vertex_out_of_range|line 7: tag 'corner': vertex 7 is out of range \\(the file has 4 vertices, numbered from 0 in tags\\)"
     "odd_crease|line 7: tag 'crease': needs pairs of vertices, got 3 numbers"
-    "bad_interpolateboundary|line 7: tag 'interpolateboundary': is 0 \\(none\\), 1 \\(edges and corners\\) or 2 \\(edges only\\), not 5")
+    "bad_interpolateboundary|line 7: tag 'interpolateboundary': is 0 \\(none\\), 1 \\(edges and corners\\) or 2 \\(edges only\\), not 5"
+    "hole_out_of_range|line 7: tag 'hole': face 2 is out of range \\(the mesh has 2 faces, numbered from 0 in tags\\)"
+    "bad_smoothtriangles|line 7: tag 'smoothtriangles': is 'catmark' or 'smooth', not 'round'")
   string(REPLACE "|" ";" parts "${bad}")
   list(GET parts 0 file)
   list(GET parts 1 message)
   subdiv_surface_error(surface_tag_${file} 1 "'[^']*tag_${file}.obj' ${message}"
     ARGS surface ${hostile}/tag_${file}.obj ${mesh_out} --scheme loop --levels 1)
 endforeach()
+# holes: kept and tagged in an OBJ OUTPUT (catmark_hole_test1: 1 hole face of
+# 6, so 4 of the 24 children), left out of an OFF OUTPUT with the face point
+# that only they used
+subdiv_cli_test(surface_obj_holes ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_hole_test1.obj
+  -o @WORK@/out.obj --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\n$")
+subdiv_cli_test(surface_off_without_holes ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_hole_test1.obj
+  -o @WORK@/out.off --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.off VERTICES 25 FACES 20)
+# the options override the file's tags, and are written back
+subdiv_cli_test(surface_sharp_options ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj
+  -o @WORK@/out.obj --scheme catmull-clark --levels 1 --boundary edges-and-corners --crease-method chaikin
+  --smooth-triangles
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 smooth\n")
+subdiv_surface_error(surface_bad_boundary_option 2 "--boundary is none, edges or edges-and-corners, not 'sharp'"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube.obj ${mesh_out} --scheme catmull-clark --levels 1
+  --boundary sharp)
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
 

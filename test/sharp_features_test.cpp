@@ -3,9 +3,11 @@
 // OpenSubdiv Far from the same tags, in the same test; refining level by
 // level equals refining at once; exact values in a rational kernel.
 #include <CGAL/Exact_rational.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/centroid.h>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +20,8 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #endif
 
+#include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -28,8 +32,9 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Edge_sharpness = Mesh::Property_map<Mesh::Edge_index, double>;
 using Vertex_sharpness = Mesh::Property_map<Mesh::Vertex_index, double>;
+using Hole_map = Mesh::Property_map<Mesh::Face_index, bool>;
 
-enum class Scheme { catmark, loop };
+enum class Scheme { catmark, loop, bilinear };
 
 /// an OpenSubdiv shape: its mesh, as the file numbers the vertices, and its tags
 struct Tagged_shape
@@ -41,6 +46,9 @@ struct Tagged_shape
   std::vector<float> corner_sharpness;
   Sd::Border_corners border = Sd::Border_corners::smooth; // OpenSubdiv's shapes: "edges only" unless tagged
   Sd::Crease_method method = Sd::Crease_method::uniform;
+  int boundary = 2; // RenderMan's numbering: 0 none, 1 edge and corner, 2 edge only
+  std::vector<int> holes;
+  bool smooth_triangles = false;
 };
 
 // OpenSubdiv's `t crease` and `t corner` tags: one sharpness for every pair
@@ -65,8 +73,14 @@ Tagged_shape read_shape(const std::string& name)
       read_tag_values(tag, 2, shape.crease_pairs, shape.crease_sharpness);
     else if(tag.name == "corner")
       read_tag_values(tag, 1, shape.corners, shape.corner_sharpness);
-    else if(tag.name == "interpolateboundary" && !tag.ints.empty()) // RenderMan: 1 edge and corner, 2 edge only
+    else if(tag.name == "interpolateboundary" && !tag.ints.empty()) { // RenderMan: 1 edge and corner, 2 edge only
       shape.border = tag.ints[0] == 1 ? Sd::Border_corners::sharp : Sd::Border_corners::smooth;
+      shape.boundary = static_cast<int>(tag.ints[0]);
+    } else if(tag.name == "hole")
+      for(long long f : tag.ints)
+        shape.holes.push_back(static_cast<int>(f));
+    else if(tag.name == "smoothtriangles" && !tag.strings.empty())
+      shape.smooth_triangles = tag.strings[0] == "smooth";
     else if(tag.name == "creasemethod" && !tag.strings.empty())
       shape.method = tag.strings[0] == "chaikin" ? Sd::Crease_method::chaikin : Sd::Crease_method::uniform;
   }
@@ -96,7 +110,17 @@ Mesh tagged_mesh(const Tagged_shape& shape)
   }
   for(std::size_t k = 0; k < shape.corner_sharpness.size(); ++k)
     put(vertices, Mesh::Vertex_index(shape.corners[k]), shape.corner_sharpness[k]);
+  Hole_map holes = mesh.add_property_map<Mesh::Face_index, bool>("f:hole", false).first;
+  for(int f : shape.holes)
+    put(holes, Mesh::Face_index(static_cast<Mesh::size_type>(f)), true);
   return mesh;
+}
+
+Sd::Boundary_interpolation boundary_of(const Tagged_shape& shape)
+{
+  return shape.boundary == 0   ? Sd::Boundary_interpolation::none
+         : shape.boundary == 1 ? Sd::Boundary_interpolation::edges_and_corners
+                               : Sd::Boundary_interpolation::edges_only;
 }
 
 /// refines the tagged mesh one level with the scheme and the shape's options
@@ -104,11 +128,37 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
 {
   const Edge_sharpness edges = mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first;
   const Vertex_sharpness vertices = mesh.property_map<Mesh::Vertex_index, double>("v:sharpness").first;
-  const auto np = Sd::parameters::edge_sharpness_map(edges).vertex_sharpness_map(vertices).crease_method(shape.method);
+  const Hole_map holes = mesh.property_map<Mesh::Face_index, bool>("f:hole").first;
+  const auto np = Sd::parameters::edge_sharpness_map(edges)
+                    .vertex_sharpness_map(vertices)
+                    .crease_method(shape.method)
+                    .face_hole_map(holes)
+                    .boundary_interpolation(boundary_of(shape))
+                    .isolated_vertices(Sd::Isolated_vertices::keep); // OpenSubdiv keeps them too
   if(scheme == Scheme::catmark)
-    Sd::subdivide(mesh, Sd::Catmull_clark_mask<Mesh>(shape.border), np);
+    Sd::catmull_clark_subdivision(mesh,
+                                  np.triangle_subdivision(shape.smooth_triangles ? Sd::Triangle_subdivision::smooth
+                                                                                 : Sd::Triangle_subdivision::catmark));
+  else if(scheme == Scheme::loop)
+    Sd::loop_subdivision(mesh, np);
   else
-    Sd::subdivide(mesh, Sd::Loop_mask<Mesh>(shape.border), np);
+    Sd::linear_quad_subdivision(mesh,
+                                Sd::parameters::face_hole_map(holes).isolated_vertices(Sd::Isolated_vertices::keep));
+}
+
+/// the centroids of the faces of `mesh` that are holes
+std::vector<testing_utils::Double_point> hole_centroids(const Mesh& mesh)
+{
+  const Hole_map holes = mesh.property_map<Mesh::Face_index, bool>("f:hole").first;
+  std::vector<testing_utils::Double_point> result;
+  for(auto f : faces(mesh))
+    if(holes[f]) {
+      std::vector<Kernel::Point_3> corners;
+      for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        corners.push_back(mesh.point(v));
+      result.push_back(CGAL::centroid(corners.begin(), corners.end()));
+    }
+  return result;
 }
 
 #if defined(SUBDIV_TEST_WITH_OSD)
@@ -125,9 +175,15 @@ struct Osd_vertex
   }
 };
 
-/// the points of every level up to `levels` of OpenSubdiv Far, from the same tags
-std::vector<std::vector<testing_utils::Double_point>> opensubdiv_levels(const Tagged_shape& shape, Scheme scheme,
-                                                                        int levels)
+/// one level of OpenSubdiv Far: its points, and the centroids of its holes
+struct Osd_level
+{
+  std::vector<testing_utils::Double_point> points;
+  std::vector<testing_utils::Double_point> holes;
+};
+
+/// every level up to `levels` of OpenSubdiv Far, from the same tags
+std::vector<Osd_level> opensubdiv_levels(const Tagged_shape& shape, Scheme scheme, int levels)
 {
   std::vector<int> sizes, indices;
   for(std::size_t f = 0; f < shape.soup.number_of_faces(); ++f)
@@ -145,14 +201,20 @@ std::vector<std::vector<testing_utils::Double_point>> opensubdiv_levels(const Ta
   desc.numCorners = static_cast<int>(shape.corner_sharpness.size());
   desc.cornerVertexIndices = shape.corners.data();
   desc.cornerWeights = shape.corner_sharpness.data();
+  desc.numHoles = static_cast<int>(shape.holes.size());
+  desc.holeIndices = shape.holes.data();
   OpenSubdiv::Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(shape.border == Sd::Border_corners::sharp
-                                        ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
-                                        : OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  options.SetVtxBoundaryInterpolation(shape.boundary == 0   ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_NONE
+                                      : shape.boundary == 1 ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
+                                                            : OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  if(shape.smooth_triangles)
+    options.SetTriangleSubdivision(OpenSubdiv::Sdc::Options::TRI_SUB_SMOOTH);
   options.SetCreasingMethod(shape.method == Sd::Crease_method::chaikin ? OpenSubdiv::Sdc::Options::CREASE_CHAIKIN
                                                                        : OpenSubdiv::Sdc::Options::CREASE_UNIFORM);
   using Factory = Osd::TopologyRefinerFactory<Osd::TopologyDescriptor>;
-  const auto type = scheme == Scheme::catmark ? OpenSubdiv::Sdc::SCHEME_CATMARK : OpenSubdiv::Sdc::SCHEME_LOOP;
+  const auto type = scheme == Scheme::catmark ? OpenSubdiv::Sdc::SCHEME_CATMARK
+                    : scheme == Scheme::loop  ? OpenSubdiv::Sdc::SCHEME_LOOP
+                                              : OpenSubdiv::Sdc::SCHEME_BILINEAR;
   std::unique_ptr<Osd::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, options)));
   EXPECT_TRUE(refiner != nullptr);
   if(refiner == nullptr)
@@ -162,7 +224,7 @@ std::vector<std::vector<testing_utils::Double_point>> opensubdiv_levels(const Ta
   for(const auto& p : shape.soup.points)
     points[0].push_back(Osd_vertex{{p[0], p[1], p[2]}});
   Osd::PrimvarRefinerReal<double> primvar(*refiner);
-  std::vector<std::vector<testing_utils::Double_point>> result(levels + 1);
+  std::vector<Osd_level> result(levels + 1);
   for(int level = 0; level <= levels; ++level) {
     if(level > 0) {
       points[level].resize(refiner->GetLevel(level).GetNumVertices());
@@ -171,7 +233,15 @@ std::vector<std::vector<testing_utils::Double_point>> opensubdiv_levels(const Ta
       primvar.Interpolate(level, source, destination);
     }
     for(const Osd_vertex& v : points[level])
-      result[level].emplace_back(v.p[0], v.p[1], v.p[2]);
+      result[level].points.emplace_back(v.p[0], v.p[1], v.p[2]);
+    const Osd::TopologyLevel& topology = refiner->GetLevel(level);
+    for(int f = 0; f < topology.GetNumFaces(); ++f)
+      if(topology.IsFaceHole(f)) {
+        std::vector<Kernel::Point_3> corners;
+        for(int v : topology.GetFaceVertices(f))
+          corners.emplace_back(points[level][v].p[0], points[level][v].p[1], points[level][v].p[2]);
+        result[level].holes.push_back(CGAL::centroid(corners.begin(), corners.end()));
+      }
   }
   return result;
 }
@@ -190,47 +260,109 @@ std::ostream& operator<<(std::ostream& out, const Conformance_case& c)
 class OpenSubdivShapes : public testing::TestWithParam<Conformance_case>
 {};
 
-// Levels 1 to 3, every vertex within 1e-12 of the bounding-box diagonal of
-// OpenSubdiv's, matched by position both ways, and the same counts.
+// the largest distance from a point of `a` to the nearest of `b`, over `scale`
+// (small sets: the holes of a level)
+double nearest_mismatch(const std::vector<testing_utils::Double_point>& a,
+                        const std::vector<testing_utils::Double_point>& b, double scale)
+{
+  double worst = 0;
+  for(const auto& p : a) {
+    double best = 1e300;
+    for(const auto& q : b)
+      best = (std::min)(best, std::sqrt(CGAL::squared_distance(p, q)));
+    worst = (std::max)(worst, best);
+  }
+  return worst / scale;
+}
+
+// The shapes that OpenSubdiv reads and a Surface_mesh cannot hold: an edge
+// with more than two faces, or faces that meet at a vertex only. OpenSubdiv
+// makes such edges infinitely sharp and such vertices corners; here they wait
+// for the split into a manifold mesh (issue 11, item 7), and the test checks
+// that each of them is indeed no polygon mesh.
+const std::vector<std::string>& non_manifold_shapes()
+{
+  static const std::vector<std::string> names = {"catmark_fan",
+                                                 "catmark_gregory_test4",
+                                                 "catmark_nonman_edge100",
+                                                 "catmark_nonman_edges",
+                                                 "catmark_nonman_quadpole360",
+                                                 "catmark_nonman_quadpole64",
+                                                 "catmark_nonman_quadpole8",
+                                                 "catmark_nonman_verts",
+                                                 "catmark_val2_nonman",
+                                                 "loop_nonman_edge100",
+                                                 "loop_nonman_edges",
+                                                 "loop_nonman_verts",
+                                                 "loop_val2_interior"};
+  return names;
+}
+
+bool is_non_manifold_shape(const std::string& name)
+{
+  const auto& names = non_manifold_shapes();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// Levels 1 to 3: the same vertex counts, every vertex within 1e-12 of the
+// bounding-box diagonal of OpenSubdiv's, matched by position both ways, and
+// the same holes (matched by their centroids).
 TEST_P(OpenSubdivShapes, refine_as_opensubdiv_far_does)
 {
   const Conformance_case& c = GetParam();
   const Tagged_shape shape = read_shape(c.shape);
+  if(is_non_manifold_shape(c.shape)) {
+    std::vector<std::vector<std::size_t>> polygons;
+    for(std::size_t f = 0; f < shape.soup.number_of_faces(); ++f)
+      polygons.emplace_back(shape.soup.indices.begin() + static_cast<std::ptrdiff_t>(shape.soup.face_starts[f]),
+                            shape.soup.indices.begin() + static_cast<std::ptrdiff_t>(shape.soup.face_starts[f + 1]));
+    EXPECT_FALSE(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
+    return;
+  }
   const auto reference = opensubdiv_levels(shape, c.scheme, 3);
   ASSERT_EQ(reference.size(), 4u);
   Mesh mesh = tagged_mesh(shape);
   for(int level = 1; level <= 3; ++level) {
     refine_once(mesh, c.scheme, shape);
     const auto ours = testing_utils::double_points(mesh);
-    ASSERT_EQ(ours.size(), reference[level].size()) << "level " << level;
-    const double mismatch = (std::max)(testing_utils::position_mismatch(ours, reference[level]),
-                                       testing_utils::position_mismatch(reference[level], ours));
+    const Osd_level& theirs = reference[level];
+    ASSERT_EQ(ours.size(), theirs.points.size()) << "level " << level;
+    const double mismatch = (std::max)(testing_utils::position_mismatch(ours, theirs.points),
+                                       testing_utils::position_mismatch(theirs.points, ours));
     EXPECT_LT(mismatch, 1e-12) << "level " << level;
+    const auto holes = hole_centroids(mesh);
+    ASSERT_EQ(holes.size(), theirs.holes.size()) << "holes, level " << level;
+    const double scale = testing_utils::diagonal(ours);
+    EXPECT_LT((std::max)(nearest_mismatch(holes, theirs.holes, scale), nearest_mismatch(theirs.holes, holes, scale)),
+              1e-12)
+      << "holes, level " << level;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-  Tags, OpenSubdivShapes,
-  testing::Values(
-    Conformance_case{"catmark_cube_creases0", Scheme::catmark},
-    Conformance_case{"catmark_cube_creases1", Scheme::catmark},
-    Conformance_case{"catmark_cube_creases2", Scheme::catmark}, Conformance_case{"catmark_chaikin0", Scheme::catmark},
-    Conformance_case{"catmark_chaikin1", Scheme::catmark}, Conformance_case{"catmark_chaikin2", Scheme::catmark},
-    Conformance_case{"catmark_dart_edgeonly", Scheme::catmark},
-    Conformance_case{"catmark_dart_edgecorner", Scheme::catmark},
-    Conformance_case{"catmark_pyramid_creases0", Scheme::catmark},
-    Conformance_case{"catmark_pyramid_creases1", Scheme::catmark},
-    Conformance_case{"catmark_tent_creases0", Scheme::catmark},
-    Conformance_case{"catmark_tent_creases1", Scheme::catmark},
-    Conformance_case{"catmark_torus_creases0", Scheme::catmark},
-    Conformance_case{"catmark_torus_creases1", Scheme::catmark},
-    Conformance_case{"catmark_inf_crease0", Scheme::catmark}, Conformance_case{"catmark_inf_crease1", Scheme::catmark},
-    Conformance_case{"catmark_single_crease", Scheme::catmark}, Conformance_case{"loop_cube_creases0", Scheme::loop},
-    Conformance_case{"loop_cube_creases1", Scheme::loop}, Conformance_case{"loop_chaikin0", Scheme::loop},
-    Conformance_case{"loop_chaikin1", Scheme::loop}, Conformance_case{"loop_icos_semisharp", Scheme::loop},
-    Conformance_case{"loop_icos_infsharp", Scheme::loop}, Conformance_case{"loop_cubes_semisharp", Scheme::loop},
-    Conformance_case{"loop_cubes_infsharp", Scheme::loop}),
-  [](const testing::TestParamInfo<Conformance_case>& info) { return info.param.shape; });
+std::vector<Conformance_case> every_shape()
+{
+  std::vector<Conformance_case> cases;
+  for(const auto& entry : std::filesystem::directory_iterator(testing_utils::test_mesh("opensubdiv"))) {
+    const std::string name = entry.path().stem().string();
+    if(entry.path().extension() != ".obj")
+      continue;
+    const Scheme scheme = name.rfind("catmark", 0) == 0 ? Scheme::catmark
+                          : name.rfind("loop", 0) == 0  ? Scheme::loop
+                                                        : Scheme::bilinear;
+    cases.push_back(Conformance_case{name, scheme});
+  }
+  std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.shape < b.shape; });
+  return cases;
+}
+
+// all 122 of OpenSubdiv's shapes (test/data/opensubdiv)
+INSTANTIATE_TEST_SUITE_P(Shapes, OpenSubdivShapes, testing::ValuesIn(every_shape()),
+                         [](const testing::TestParamInfo<Conformance_case>& info) { return info.param.shape; });
+
+TEST(OpenSubdivShapes, all_122_are_bundled)
+{
+  EXPECT_EQ(every_shape().size(), 122u);
+}
 #else
 TEST(OpenSubdivShapes, refine_as_opensubdiv_far_does)
 {
@@ -342,6 +474,72 @@ TEST(SharpFeatures, negative_sharpness_is_refused)
   EXPECT_NE(message.find("the sharpness of edge 3 is negative or NaN"), std::string::npos) << message;
   EXPECT_EQ(num_vertices(mesh), num_vertices(before));
   EXPECT_EQ(num_faces(mesh), num_faces(before));
+}
+
+// OpenSubdiv's TRI_SUB_SMOOTH in rationals, on a tetrahedron (all triangles):
+// every edge point is 3/100 of each end and 47/100 of each face point
+TEST(SharpFeatures, smooth_triangle_rule_is_exact_in_rationals)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  Exact_mesh mesh = testing_utils::tetrahedron<Exact_mesh>();
+  std::vector<EK::Point_3> expected;
+  for(auto e : edges(mesh)) {
+    const auto h = mesh.halfedge(e);
+    const auto face_point = [&](Exact_mesh::Halfedge_index g) {
+      return CGAL::centroid(mesh.point(mesh.source(g)), mesh.point(mesh.target(g)),
+                            mesh.point(mesh.target(mesh.next(g))));
+    };
+    const EK::Vector_3 sum = FT(3) / FT(100) * (mesh.point(mesh.source(h)) - CGAL::ORIGIN) +
+                             FT(3) / FT(100) * (mesh.point(mesh.target(h)) - CGAL::ORIGIN) +
+                             FT(47) / FT(100) * (face_point(h) - CGAL::ORIGIN) +
+                             FT(47) / FT(100) * (face_point(mesh.opposite(h)) - CGAL::ORIGIN);
+    expected.push_back(CGAL::ORIGIN + sum);
+  }
+  Sd::catmull_clark_subdivision(mesh, Sd::parameters::triangle_subdivision(Sd::Triangle_subdivision::smooth));
+  for(const EK::Point_3& p : expected) {
+    bool seen = false;
+    for(auto v : vertices(mesh))
+      seen = seen || mesh.point(v) == p;
+    EXPECT_TRUE(seen) << p;
+  }
+}
+
+// The options of the mask and the named parameters must agree, and a scheme
+// without the option refuses it: a clear error, the mesh unchanged.
+TEST(SharpFeatures, options_the_mask_does_not_have_are_refused)
+{
+  Mesh mesh = testing_utils::tetrahedron<Mesh>();
+  const Mesh before = mesh;
+  std::string message = testing_utils::bad_input_message([&] {
+    Sd::subdivide(mesh, Sd::Butterfly_mask<Mesh>(),
+                  Sd::parameters::boundary_interpolation(Sd::Boundary_interpolation::edges_and_corners));
+  });
+  EXPECT_NE(message.find("boundary_interpolation(edges_and_corners) needs the mask's Border_corners::sharp"),
+            std::string::npos)
+    << message;
+  message = testing_utils::bad_input_message([&] {
+    Sd::subdivide(mesh, Sd::Loop_mask<Mesh>(), Sd::parameters::triangle_subdivision(Sd::Triangle_subdivision::smooth));
+  });
+  EXPECT_NE(message.find("triangle_subdivision(smooth) is an option of Catmull_clark_mask"), std::string::npos)
+    << message;
+  EXPECT_EQ(num_vertices(mesh), num_vertices(before));
+  EXPECT_EQ(num_faces(mesh), num_faces(before));
+}
+
+// The children of a hole are holes, in every scheme (here Loop, without
+// sharpness): one level of a tetrahedron with face 0 a hole gives 4 holes.
+TEST(SharpFeatures, children_of_holes_are_holes)
+{
+  Mesh mesh = testing_utils::tetrahedron<Mesh>();
+  auto holes = mesh.add_property_map<Mesh::Face_index, bool>("f:hole", false).first;
+  holes[Mesh::Face_index(0)] = true;
+  Sd::loop_subdivision(mesh, Sd::parameters::face_hole_map(holes).number_of_iterations(2));
+  std::size_t count = 0;
+  for(auto f : faces(mesh))
+    count += holes[f] ? 1 : 0;
+  EXPECT_EQ(count, 16u);
 }
 
 } // namespace

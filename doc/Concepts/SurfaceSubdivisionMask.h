@@ -119,6 +119,11 @@ public:
   /// `Dual_split` and `Sqrt3_split` do not read it.
   CGAL::Subdiv::Border_corners border_corners() const;
 
+  /// optional: the edge rule next to triangles (`Catmull_clark_mask`), which
+  /// the named parameter `triangle_subdivision` of `subdivide()` must match;
+  /// without it, `Triangle_subdivision::catmark`.
+  CGAL::Subdiv::Triangle_subdivision triangle_subdivision() const;
+
   /// optional: a copy of the mask that refines with the sharpness tags of
   /// `level` (made by `subdivide()` for each level). When the mask has it,
   /// `subdivide()` accepts `edge_sharpness_map` and `vertex_sharpness_map`;

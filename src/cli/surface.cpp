@@ -236,14 +236,18 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary, co
   Atomic_file file(path);
   std::ostream& out = file.stream();
   const auto np = CGAL::parameters::stream_precision(17);
+  // OFF, PLY and STL have no hole tags: the faces that are holes are left out
+  const bool has_holes = mesh.property_map<Surface::Face_index, bool>(face_hole_name).second;
+  const Surface without = has_holes && format != Mesh_format::obj ? without_holes(mesh) : Surface();
+  const Surface& drawn = has_holes && format != Mesh_format::obj ? without : mesh;
   bool ok = true;
   {
     Captured_cerr quiet;
     switch(format) {
       case Mesh_format::off:
-        ok = CGAL::IO::write_OFF(out, mesh, np);
+        ok = CGAL::IO::write_OFF(out, drawn, np);
         break;
-      case Mesh_format::obj:
+      case Mesh_format::obj: // the holes stay, tagged
         ok = CGAL::IO::write_OBJ(out, mesh, np);
         if(ok && tags != nullptr)
           write_obj_tags(out, mesh, *tags);
@@ -251,14 +255,14 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary, co
       case Mesh_format::ply:
         if(binary)
           CGAL::IO::set_binary_mode(out);
-        ok = CGAL::IO::write_PLY(out, mesh, np);
+        ok = CGAL::IO::write_PLY(out, drawn, np);
         break;
       case Mesh_format::stl:
         // STL holds triangles only: split the faces of a copy
-        if(CGAL::is_triangle_mesh(mesh)) {
-          write_stl(mesh, out, binary, path);
+        if(CGAL::is_triangle_mesh(drawn)) {
+          write_stl(drawn, out, binary, path);
         } else {
-          Surface triangles = mesh;
+          Surface triangles = drawn;
           CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
           write_stl(triangles, out, binary, path);
         }

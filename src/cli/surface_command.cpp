@@ -16,9 +16,38 @@
 namespace cgal_subdiv {
 namespace {
 
+// --boundary, --crease-method and --smooth-triangles: over the file's tags
+void apply_sharp_options(const Parsed_args& args, Sharp_options& options)
+{
+  if(args.has("--boundary")) {
+    const std::string mode = args.value("--boundary");
+    if(mode == "none")
+      options.boundary = CGAL::Subdiv::Boundary_interpolation::none;
+    else if(mode == "edges")
+      options.boundary = CGAL::Subdiv::Boundary_interpolation::edges_only;
+    else if(mode == "edges-and-corners")
+      options.boundary = CGAL::Subdiv::Boundary_interpolation::edges_and_corners;
+    else
+      throw Usage_error("--boundary is none, edges or edges-and-corners, not '" + mode + "'");
+    options.present = true;
+  }
+  if(args.has("--crease-method")) {
+    const std::string method = args.value("--crease-method");
+    if(method != "uniform" && method != "chaikin")
+      throw Usage_error("--crease-method is uniform or chaikin, not '" + method + "'");
+    options.method = method == "chaikin" ? CGAL::Subdiv::Crease_method::chaikin : CGAL::Subdiv::Crease_method::uniform;
+    options.present = true;
+  }
+  if(args.has("--smooth-triangles")) {
+    options.triangles = CGAL::Subdiv::Triangle_subdivision::smooth;
+    options.present = true;
+  }
+}
+
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
                            [--displace HEIGHTS] [--repair] [--max-memory SIZE]
-                           [--binary] [--verbose]
+                           [--boundary MODE] [--crease-method METHOD]
+                           [--smooth-triangles] [--binary] [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -32,11 +61,14 @@ writing not included).
                         not, the error names the edge or vertex at fault.
                         Colours, normals and other properties are ignored.
                         OpenSubdiv's OBJ tags are read: t crease, t corner
-                        (vertices from 0), t interpolateboundary (RenderMan's
-                        numbers: 1 edges and corners, 2 edges only, 0 read as
-                        2) and t creasemethod (normal or chaikin), for loop,
-                        loop-warren and catmull-clark; an OBJ OUTPUT gets the
-                        children's tags. Other tags are ignored, with a note.
+                        (vertices from 0), t hole (faces from 0),
+                        t interpolateboundary (RenderMan's numbers: 0 none,
+                        1 edges and corners, 2 edges only), t creasemethod
+                        (normal or chaikin) and t smoothtriangles (catmark or
+                        smooth), for loop, loop-warren and catmull-clark; an
+                        OBJ OUTPUT gets the children's tags (holes included),
+                        OFF, PLY and STL leave the holes out. Other tags are
+                        ignored, with a note.
   -o, --output OUTPUT   OFF, OBJ, PLY or STL (from the extension), ASCII, 17
                         significant digits; STL holds triangles, so other faces
                         are split into triangles there. Written to a temporary
@@ -61,6 +93,15 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --repair              read INPUT as a polygon soup, repair and orient it
                         (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh):
                         for files that are not manifold meshes as they stand
+  --boundary MODE       none, edges or edges-and-corners: OpenSubdiv's boundary
+                        interpolation (default edges, or INPUT's tag); none
+                        refines as edges and makes the faces at the border
+                        holes, left out of the OUTPUT
+  --crease-method METHOD
+                        uniform or chaikin: how semi-sharp creases decay
+                        (default uniform, or INPUT's tag)
+  --smooth-triangles    catmull-clark: OpenSubdiv's TRI_SUB_SMOOTH edge rule
+                        next to triangles (or INPUT's tag)
   --max-memory SIZE     refuse, before any work, a run whose output would take
                         more memory than SIZE (default: this machine's memory),
                         e.g. 8G, 512MB, 2GiB; the estimate is the output faces
@@ -79,9 +120,10 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 )";
 
 const std::vector<Option_spec> surface_options = {
-  {{"-o", "--output"}, true}, {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
-  {{"--limit"}, false},       {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false},
-  {{"--max-memory"}, true},   {{"--binary"}, false}};
+  {{"-o", "--output"}, true},     {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
+  {{"--limit"}, false},           {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false},
+  {{"--max-memory"}, true},       {{"--binary"}, false},  {{"--boundary"}, true},       {{"--crease-method"}, true},
+  {{"--smooth-triangles"}, false}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -176,6 +218,7 @@ int surface_command(const std::vector<std::string>& arguments)
                     "': --repair renumbers the vertices they name");
   else if(!file_tags.tags.empty())
     sharp_options = apply_obj_tags(file_tags.tags, file_tags.file_vertices, mesh, file_numbers, input, notes);
+  apply_sharp_options(args, sharp_options);
   const bool tagged = sharp_options.present;
   if(tagged && (displace || args.has("--limit")))
     throw Input_error("'" + input +

@@ -46,12 +46,19 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
       const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
-      SD::subdivide(mesh, Mask(options.border),
-                    SD::parameters::number_of_iterations(levels)
-                      .max_memory(max_memory)
-                      .edge_sharpness_map(edges)
-                      .vertex_sharpness_map(vertices)
-                      .crease_method(options.method));
+      const auto holes = mesh.add_property_map<Surface::Face_index, bool>(face_hole_name, false).first;
+      const auto np = SD::parameters::number_of_iterations(levels)
+                        .max_memory(max_memory)
+                        .edge_sharpness_map(edges)
+                        .vertex_sharpness_map(vertices)
+                        .crease_method(options.method)
+                        .face_hole_map(holes)
+                        .boundary_interpolation(options.boundary);
+      const SD::Border_corners corners = SD::internal::border_corners_for(options.boundary);
+      if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
+        SD::subdivide(mesh, Mask(corners, options.triangles), np.triangle_subdivision(options.triangles));
+      else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
+        SD::subdivide(mesh, Mask(corners), np);
     };
   return scheme;
 }

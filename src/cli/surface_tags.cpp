@@ -4,6 +4,7 @@
 
 #include "errors.h"
 
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
@@ -13,11 +14,13 @@ namespace cgal_subdiv {
 
 const char* const edge_sharpness_name = "e:sharpness";
 const char* const vertex_sharpness_name = "v:sharpness";
+const char* const face_hole_name = "f:hole";
 
 namespace {
 
 using Edge_map = Surface::Property_map<Surface::Edge_index, double>;
 using Vertex_map = Surface::Property_map<Surface::Vertex_index, double>;
+using Hole_map = Surface::Property_map<Surface::Face_index, bool>;
 
 // "FILE:LINE: tag NAME: " for the messages
 std::string where(const std::string& path, const Obj_tag& tag)
@@ -83,6 +86,21 @@ public:
       vertices[vertex(tag.ints[k], at)] = values[k];
   }
 
+  // faces numbered from 0 in the order of the file, which is the mesh's
+  void hole(const Obj_tag& tag)
+  {
+    const std::string at = where(m_path, tag);
+    if(tag.ints.empty() || !tag.floats.empty() || !tag.strings.empty())
+      throw Input_error(at + "needs one or more faces, and nothing else");
+    Hole_map holes = m_mesh.add_property_map<Surface::Face_index, bool>(face_hole_name, false).first;
+    for(long long number : tag.ints) {
+      if(number < 0 || static_cast<unsigned long long>(number) >= m_mesh.number_of_faces())
+        throw Input_error(at + "face " + std::to_string(number) + " is out of range (the mesh has " +
+                          std::to_string(m_mesh.number_of_faces()) + " faces, numbered from 0 in tags)");
+      holes[Surface::Face_index(static_cast<Surface::size_type>(number))] = true;
+    }
+  }
+
 private:
   Surface::Vertex_index vertex(long long number, const std::string& at) const
   {
@@ -124,20 +142,28 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
       reader.crease(tag);
     } else if(tag.name == "corner") {
       reader.corner(tag);
+    } else if(tag.name == "hole") {
+      reader.hole(tag);
     } else if(tag.name == "interpolateboundary") {
       require_one_value(tag, true, at);
       if(tag.ints[0] < 0 || tag.ints[0] > 2)
         throw Input_error(at + "is 0 (none), 1 (edges and corners) or 2 (edges only), not " +
                           std::to_string(tag.ints[0]));
-      options.border = tag.ints[0] == 1 ? CGAL::Subdiv::Border_corners::sharp : CGAL::Subdiv::Border_corners::smooth;
-      if(tag.ints[0] == 0)
-        notes.push_back(at + "boundary interpolation 'none' is refined as 'edges only'");
+      options.boundary = tag.ints[0] == 0   ? CGAL::Subdiv::Boundary_interpolation::none
+                         : tag.ints[0] == 1 ? CGAL::Subdiv::Boundary_interpolation::edges_and_corners
+                                            : CGAL::Subdiv::Boundary_interpolation::edges_only;
     } else if(tag.name == "creasemethod") {
       require_one_value(tag, false, at);
       if(tag.strings[0] != "normal" && tag.strings[0] != "chaikin")
         throw Input_error(at + "is 'normal' or 'chaikin', not '" + tag.strings[0] + "'");
       options.method =
         tag.strings[0] == "chaikin" ? CGAL::Subdiv::Crease_method::chaikin : CGAL::Subdiv::Crease_method::uniform;
+    } else if(tag.name == "smoothtriangles") {
+      require_one_value(tag, false, at);
+      if(tag.strings[0] != "catmark" && tag.strings[0] != "smooth")
+        throw Input_error(at + "is 'catmark' or 'smooth', not '" + tag.strings[0] + "'");
+      options.triangles = tag.strings[0] == "smooth" ? CGAL::Subdiv::Triangle_subdivision::smooth
+                                                     : CGAL::Subdiv::Triangle_subdivision::catmark;
     } else {
       ++ignored;
       continue;
@@ -146,7 +172,8 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
   }
   if(ignored > 0)
     notes.push_back("ignored " + std::to_string(ignored) + (ignored == 1 ? " tag line" : " tag lines") + " of '" +
-                    path + "' (only crease, corner, interpolateboundary and creasemethod are read)");
+                    path +
+                    "' (only crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles are read)");
   return options;
 }
 
@@ -156,12 +183,40 @@ bool has_sharpness(const Surface& mesh)
          mesh.property_map<Surface::Vertex_index, double>(vertex_sharpness_name).second;
 }
 
+Surface without_holes(const Surface& mesh)
+{
+  Surface copy = mesh;
+  const auto holes = copy.property_map<Surface::Face_index, bool>(face_hole_name);
+  if(!holes.second)
+    return copy;
+  std::vector<Surface::Face_index> hole_faces;
+  for(Surface::Face_index f : copy.faces())
+    if(holes.first[f])
+      hole_faces.push_back(f);
+  for(Surface::Face_index f : hole_faces)
+    CGAL::Euler::remove_face(copy.halfedge(f), copy);
+  copy.collect_garbage();
+  return copy;
+}
+
 void write_obj_tags(std::ostream& out, const Surface& mesh, const Sharp_options& options)
 {
   out.precision(17); // the values are floats in doubles (views/Sharpness.h): read back, they are the same
-  out << "t interpolateboundary 1/0/0 " << (options.border == CGAL::Subdiv::Border_corners::sharp ? 1 : 2) << '\n';
+  using Boundary = CGAL::Subdiv::Boundary_interpolation;
+  out << "t interpolateboundary 1/0/0 "
+      << (options.boundary == Boundary::none                ? 0
+          : options.boundary == Boundary::edges_and_corners ? 1
+                                                            : 2)
+      << '\n';
   out << "t creasemethod 0/0/1 " << (options.method == CGAL::Subdiv::Crease_method::chaikin ? "chaikin" : "normal")
       << '\n';
+  if(options.triangles == CGAL::Subdiv::Triangle_subdivision::smooth)
+    out << "t smoothtriangles 0/0/1 smooth\n";
+  const auto holes = mesh.property_map<Surface::Face_index, bool>(face_hole_name);
+  if(holes.second)
+    for(Surface::Face_index f : mesh.faces())
+      if(holes.first[f])
+        out << "t hole 1/0/0 " << f.idx() << '\n';
   const auto edges = mesh.property_map<Surface::Edge_index, double>(edge_sharpness_name);
   if(edges.second)
     for(Surface::Edge_index e : mesh.edges())

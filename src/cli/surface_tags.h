@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Copyright (c) 2026 CGAL Subdiv contributors
 //
-// OpenSubdiv's OBJ tags (`t crease`, `t corner`, `t interpolateboundary`,
-// `t creasemethod`) as the sharpness maps of a Surface_mesh, checked line by
-// line, and written back after a refinement.
+// OpenSubdiv's OBJ tags (`t crease`, `t corner`, `t hole`,
+// `t interpolateboundary`, `t creasemethod`, `t smoothtriangles`) as the
+// sharpness and hole maps of a Surface_mesh, checked line by line, and
+// written back after a refinement.
 #ifndef CGAL_SUBDIV_CLI_SURFACE_TAGS_H
 #define CGAL_SUBDIV_CLI_SURFACE_TAGS_H
 
@@ -11,6 +12,7 @@
 #include "surface_from_soup.h"
 
 #include <CGAL/Subdiv/views/Sharpness.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <ostream>
 #include <string>
@@ -18,30 +20,34 @@
 
 namespace cgal_subdiv {
 
-/// the maps the tags are kept in, on the mesh: "e:sharpness", "v:sharpness" (double)
+/// the maps the tags are kept in, on the mesh: "e:sharpness", "v:sharpness"
+/// (double), "f:hole" (bool)
 extern const char* const edge_sharpness_name;
 extern const char* const vertex_sharpness_name;
+extern const char* const face_hole_name;
 
 /// the options the tags give, besides the maps
 struct Sharp_options
 {
-  /// `t interpolateboundary`: 1 (RenderMan's numbering) is "edges and
-  /// corners"; 2, the default of OpenSubdiv's shapes, and 0 are "edges only"
-  CGAL::Subdiv::Border_corners border = CGAL::Subdiv::Border_corners::smooth;
+  /// `t interpolateboundary` (RenderMan's numbering): 0 none, 1 edges and
+  /// corners, 2 edges only (the default of OpenSubdiv's shapes)
+  CGAL::Subdiv::Boundary_interpolation boundary = CGAL::Subdiv::Boundary_interpolation::edges_only;
   CGAL::Subdiv::Crease_method method = CGAL::Subdiv::Crease_method::uniform;
-  /// whether one of the four tags was read
+  /// `t smoothtriangles` (catmark or smooth; Catmull-Clark only)
+  CGAL::Subdiv::Triangle_subdivision triangles = CGAL::Subdiv::Triangle_subdivision::catmark;
+  /// whether a tag was read (or an option of the command line set one)
   bool present = false;
 };
 
 /*
- * Puts the sharpness of the `t crease` and `t corner` tags in the maps of
- * `mesh` (added when a tag needs them) and returns the options of
- * `t interpolateboundary` and `t creasemethod`; other tags are ignored, with a
- * note. `file_numbers[v]` is the number in the file (from 1) of mesh vertex v;
+ * Puts the sharpness of the `t crease` and `t corner` tags and the faces of
+ * `t hole` in the maps of `mesh` (added when a tag needs them) and returns the
+ * options of `t interpolateboundary`, `t creasemethod` and
+ * `t smoothtriangles`; other tags are ignored, with a note. `file_numbers[v]` is the number in the file (from 1) of mesh vertex v;
  * tags number vertices from 0, as OpenSubdiv's shapes do.
  * \throws Input_error naming `path` and the line: a malformed tag, a vertex
- *         out of range or in no face, a crease that is no edge of the mesh, a
- *         negative or NaN sharpness
+ *         out of range or in no face, a face out of range, a crease that is
+ *         no edge of the mesh, a negative or NaN sharpness
  */
 Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_vertices, Surface& mesh,
                              const std::vector<std::size_t>& file_numbers, const std::string& path,
@@ -50,10 +56,13 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
 /// whether `mesh` has sharpness maps (tags were read)
 bool has_sharpness(const Surface& mesh);
 
-/// `options` and the sharp edges (not on the border) and sharp vertices of
-/// `mesh` as tag lines (`t interpolateboundary`, `t creasemethod`, `t crease`,
-/// `t corner`), vertices numbered from 0 in the mesh's order (as the OBJ
-/// writer writes them)
+/// a copy of `mesh` without its hole faces (for the formats that have no hole tags)
+Surface without_holes(const Surface& mesh);
+
+/// `options` and the sharp edges (not on the border), sharp vertices and
+/// holes of `mesh` as tag lines (`t interpolateboundary`, `t creasemethod`,
+/// `t smoothtriangles`, `t crease`, `t corner`, `t hole`), vertices and faces
+/// numbered from 0 in the mesh's order (as the OBJ writer writes them)
 void write_obj_tags(std::ostream& out, const Surface& mesh, const Sharp_options& options);
 
 } // namespace cgal_subdiv

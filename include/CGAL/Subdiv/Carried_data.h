@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/parameters.h>
+#include <CGAL/Subdiv/refinement/Inherited_face_map.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/number_utils.h>
@@ -81,13 +82,10 @@ public:
   Carried_data& face_map(FaceMap map)
   {
     m_face_channels.push_back([map](const Mesh& mesh) -> Face_writer {
-      using Value = typename boost::property_traits<FaceMap>::value_type;
-      auto old_values = std::make_shared<std::vector<Value>>();
-      for(face_descriptor f : faces(mesh)) // in iteration order: the ordinals of the parents
-        old_values->push_back(get(map, f));
-      return [map, old_values](const std::vector<face_descriptor>& new_faces, const std::vector<std::size_t>& parents) {
-        for(std::size_t k = 0; k < new_faces.size(); ++k)
-          put(map, new_faces[k], (*old_values)[parents[k]]);
+      auto inherited = std::make_shared<internal::Inherited_face_map<Mesh, FaceMap>>(mesh, map);
+      inherited->read_old_values();
+      return [inherited](const std::vector<face_descriptor>& new_faces, const std::vector<std::size_t>& parents) {
+        inherited->write_new_values(new_faces, parents);
       };
     });
     return *this;

@@ -58,6 +58,12 @@ struct vertex_sharpness_map_t
 {};
 struct crease_method_t
 {};
+struct face_hole_map_t
+{};
+struct boundary_interpolation_t
+{};
+struct triangle_subdivision_t
+{};
 
 } // namespace internal
 
@@ -132,7 +138,13 @@ using CGAL::parameters::is_default_parameter;
  *    (0 smooth, 10 and above infinitely sharp); `subdivide()` writes the
  *    sharpness of the children into them;
  *  - crease_method: surfaces, how semi-sharp edges decay (`Crease_method`;
- *    default uniform).
+ *    default uniform);
+ *  - face_hole_map: surfaces, a read-write property map of the faces that are
+ *    holes (bool); `subdivide()` makes the children of a hole holes;
+ *  - boundary_interpolation: surfaces, OpenSubdiv's boundary modes
+ *    (`Boundary_interpolation`; default edges only);
+ *  - triangle_subdivision: Catmull-Clark, the edge rule next to triangles
+ *    (`Triangle_subdivision`; default catmark).
  * Kept by reference (the chain holds a pointer to the argument):
  *  - carried_data: other vertex and face data to carry through the levels
  *    (`Carried_data`);
@@ -158,7 +170,10 @@ using CGAL::parameters::is_default_parameter;
   X(isolated_vertices, internal::isolated_vertices_t)                \
   X(edge_sharpness_map, internal::edge_sharpness_map_t)              \
   X(vertex_sharpness_map, internal::vertex_sharpness_map_t)          \
-  X(crease_method, internal::crease_method_t)
+  X(crease_method, internal::crease_method_t)                        \
+  X(face_hole_map, internal::face_hole_map_t)                        \
+  X(boundary_interpolation, internal::boundary_interpolation_t)      \
+  X(triangle_subdivision, internal::triangle_subdivision_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \

@@ -10,6 +10,7 @@
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/parameters.h>
+#include <CGAL/Subdiv/refinement/Inherited_face_map.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/views/Sharp_level.h>
 
@@ -22,6 +23,19 @@ namespace Subdiv {
 
 namespace internal {
 
+/// the sharpness that the map of `np` under `MapTag` (`edge_sharpness_map_t`,
+/// `vertex_sharpness_map_t`) gives `key` (0 without such a map)
+template <class MapTag, class NamedParameters, class Key>
+auto tagged_sharpness(const NamedParameters& np, Key key)
+{
+  if constexpr(!parameters::is_default_parameter<NamedParameters, MapTag>::value)
+    return get(parameters::get_parameter(np, MapTag()), key);
+  else {
+    (void)np, (void)key;
+    return 0;
+  }
+}
+
 /*
  * One level of `subdivide()` with sharpness tags: the tags of the level are
  * read from the maps of `np`, the mask refines with them, and the children's
@@ -33,30 +47,17 @@ void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParam
   static_assert(Takes_sharpness_tags<Mask>::value,
                 "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
   using GT = boost::graph_traits<PolygonMesh>;
   using FT = typename Mask::Number_type;
   const Crease_method method =
     parameters::choose_parameter(get_parameter(np, crease_method_t()), Crease_method::uniform);
   const auto edges = get_parameter(np, edge_sharpness_map_t());
   const auto vertices = get_parameter(np, vertex_sharpness_map_t());
-  constexpr bool has_edges = !is_default_parameter<NamedParameters, edge_sharpness_map_t>::value;
-  constexpr bool has_vertices = !is_default_parameter<NamedParameters, vertex_sharpness_map_t>::value;
   const auto edge_sharpness = [&](typename GT::edge_descriptor e) {
-    if constexpr(has_edges)
-      return get(edges, e);
-    else {
-      (void)e;
-      return 0;
-    }
+    return tagged_sharpness<edge_sharpness_map_t>(np, e);
   };
   const auto vertex_sharpness = [&](typename GT::vertex_descriptor v) {
-    if constexpr(has_vertices)
-      return get(vertices, v);
-    else {
-      (void)v;
-      return 0;
-    }
+    return tagged_sharpness<vertex_sharpness_map_t>(np, v);
   };
   const Sharp_level<PolygonMesh, FT> tags(mesh, edge_sharpness, vertex_sharpness, method, border_corners_of(mask),
                                           mask.name());
@@ -64,6 +65,57 @@ void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParam
   using Vertices = std::remove_const_t<decltype(vertices)>;
   Sharpness_writer<PolygonMesh, FT, Edges, Vertices> writer(mesh, tags, &edges, &vertices);
   refine_one(mask.with_sharp_level(&tags), writer);
+}
+
+/*
+ * The named parameters `boundary_interpolation` and `triangle_subdivision`
+ * name options of the mask (`loop_subdivision()` and the like make the mask
+ * from them): a call to `subdivide()` whose mask has other options is refused.
+ */
+template <class Mask, class NamedParameters>
+void check_mask_options(const Mask& mask, const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  if constexpr(!is_default_parameter<NamedParameters, boundary_interpolation_t>::value) {
+    const Boundary_interpolation boundary = get_parameter(np, boundary_interpolation_t());
+    require(border_corners_for(boundary) == border_corners_of(mask),
+            mask.name() +
+              ": boundary_interpolation(edges_and_corners) needs the mask's Border_corners::sharp, and "
+              "the other modes Border_corners::smooth (the argument of the constructors of Loop_mask "
+              "and Catmull_clark_mask; the other schemes have smooth corners only)");
+  }
+  if constexpr(!is_default_parameter<NamedParameters, triangle_subdivision_t>::value)
+    require(get_parameter(np, triangle_subdivision_t()) == triangle_subdivision_of(mask),
+            mask.name() +
+              ": triangle_subdivision(smooth) is an option of Catmull_clark_mask, which was made "
+              "with another (pass it to the constructor, or call catmull_clark_subdivision())");
+}
+
+/*
+ * Under `Boundary_interpolation::none` the faces at the border have no limit
+ * surface, as in OpenSubdiv: true in `holes` for every face at a border
+ * vertex that the tags of `np` do not make a crease or a corner (fewer than
+ * two tagged sharp edges, no vertex sharpness), so that tagging the border
+ * keeps its faces. (This is what OpenSubdiv 3.5 does on its two shapes with
+ * this mode, catmark_edgenone and loop_triangle_edgenone, which the tests
+ * compare face by face.)
+ */
+template <class PolygonMesh, class FaceHoleMap, class NamedParameters>
+void make_border_faces_holes(const PolygonMesh& mesh, const FaceHoleMap& holes, const NamedParameters& np)
+{
+  for(auto v : vertices(mesh)) {
+    if(!CGAL::is_border(v, mesh) || tagged_sharpness<vertex_sharpness_map_t>(np, v) > 0)
+      continue;
+    int tagged_sharp = 0;
+    for(auto h : CGAL::halfedges_around_target(v, mesh))
+      tagged_sharp += tagged_sharpness<edge_sharpness_map_t>(np, edge(h, mesh)) > 0 ? 1 : 0;
+    if(tagged_sharp >= 2)
+      continue;
+    for(auto f : CGAL::faces_around_target(halfedge(v, mesh), mesh))
+      if(f != boost::graph_traits<PolygonMesh>::null_face())
+        put(holes, f, true);
+  }
 }
 
 } // namespace internal
@@ -98,6 +150,20 @@ void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParam
  *     edges are always sharp), refined with their decay and blends, with
  *     `crease_method` (`Crease_method`, default uniform); after each level
  *     the maps hold the sharpness of the children (Loop and Catmull-Clark);
+ *   - `face_hole_map` (a read-write property map of bool, by default none):
+ *     the faces that are holes, as OpenSubdiv's hole tags: a hole is refined
+ *     like any face (its vertices take part in the rules of their
+ *     neighbours) but has no limit surface, and after each level the map
+ *     holds true for every child of a hole, so that the holes can be left out
+ *     of what is drawn or written (`cgal-subdiv` does);
+ *   - `boundary_interpolation` (`Boundary_interpolation`, default edges
+ *     only): OpenSubdiv's boundary modes. It must agree with the mask's
+ *     `Border_corners` (edges and corners: sharp); `none` refines as edges
+ *     only and, with a `face_hole_map`, makes the faces at the border holes
+ *     first;
+ *   - `triangle_subdivision` (`Triangle_subdivision`): must agree with the
+ *     mask's (Catmull-Clark; `catmull_clark_subdivision()` makes its mask
+ *     with it);
  *   - `threads` (default 1; 0: TBB's choice): how many threads refine a
  *     `Surface_mesh` (points with double coordinates; with TBB only); the
  *     result is the same bit for bit with any number.
@@ -130,6 +196,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   const internal::Isolated_check isolated_check = isolated == Isolated_vertices::refuse
                                                     ? internal::Isolated_check::refuse_naming_parameter
                                                     : internal::Isolated_check::allow;
+  internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated_check);
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
@@ -162,13 +229,27 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     }
     internal::refine_level(mesh, level_mask, internal::Mask_points<VPM>{vpm}, loop, sinks...);
   };
+  // the children of a hole are holes: the hole map is inherited level by level
+  constexpr bool has_holes = !parameters::is_default_parameter<NamedParameters, internal::face_hole_map_t>::value;
+  const auto refine_one_with_holes = [&](const auto& level_mask, auto&... sinks) {
+    if constexpr(has_holes) {
+      using Holes = std::remove_const_t<decltype(get_parameter(np, internal::face_hole_map_t()))>;
+      internal::Inherited_face_map<PolygonMesh, Holes> holes(mesh, get_parameter(np, internal::face_hole_map_t()));
+      refine_one(level_mask, holes, sinks...);
+    } else
+      refine_one(level_mask, sinks...);
+  };
+  if constexpr(has_holes)
+    if(levels > 0 && choose_parameter(get_parameter(np, internal::boundary_interpolation_t()),
+                                      Boundary_interpolation::edges_only) == Boundary_interpolation::none)
+      internal::make_border_faces_holes(mesh, get_parameter(np, internal::face_hole_map_t()), np);
   constexpr bool tagged = !parameters::is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
                           !parameters::is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value;
   for(int level = 0; level < levels; ++level) {
     if constexpr(tagged)
-      internal::refine_with_sharpness(mesh, mask, np, refine_one);
+      internal::refine_with_sharpness(mesh, mask, np, refine_one_with_holes);
     else
-      refine_one(mask);
+      refine_one_with_holes(mask);
   }
   if constexpr(may_set_aside)
     if(isolated == Isolated_vertices::keep)

@@ -28,20 +28,33 @@ namespace internal {
 template <class PolygonMesh, class NamedParameters>
 using Call_FT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type::FT;
 
+/// the `Border_corners` of the masks of a call (its `boundary_interpolation`)
+template <class NamedParameters>
+Border_corners call_border_corners(const NamedParameters& np)
+{
+  return border_corners_for(parameters::choose_parameter(parameters::get_parameter(np, boundary_interpolation_t()),
+                                                         Boundary_interpolation::edges_only));
+}
+
 } // namespace internal
 
 /// Loop subdivision with Loop's 1987 weights. \sa `subdivide()`, `Loop_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void loop_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
+  subdivide(mesh,
+            Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(internal::call_border_corners(np)),
+            np);
 }
 
 /// Loop subdivision with Warren's rational weights. \sa `subdivide()`, `Loop_mask`, `Warren_beta`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void loop_warren_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>, Warren_beta>(), np);
+  subdivide(mesh,
+            Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>, Warren_beta>(
+              internal::call_border_corners(np)),
+            np);
 }
 
 /// Butterfly subdivision (Dyn, Levin, Gregory 1990, tension 1/16). \sa `subdivide()`, `Butterfly_mask`
@@ -69,7 +82,12 @@ void linear_triangle_subdivision(PolygonMesh& mesh, const NamedParameters& np = 
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 void catmull_clark_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  subdivide(mesh, Catmull_clark_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
+  const Triangle_subdivision triangles = parameters::choose_parameter(
+    parameters::get_parameter(np, internal::triangle_subdivision_t()), Triangle_subdivision::catmark);
+  subdivide(mesh,
+            Catmull_clark_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(
+              internal::call_border_corners(np), triangles),
+            np);
 }
 
 /// Doo-Sabin subdivision of any polygon mesh. \sa `subdivide()`, `Doo_sabin_mask`

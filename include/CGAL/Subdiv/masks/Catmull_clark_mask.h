@@ -40,7 +40,8 @@ namespace Subdiv {
  * a corner stays where it is (weight 1 on itself), as with OpenSubdiv's
  * `VTX_BOUNDARY_EDGE_AND_CORNER` (RenderMan "interpolateboundary 1");
  * everything else is the same (the tests check both against OpenSubdiv's
- * reference results).
+ * reference results). `Triangle_subdivision::smooth` changes the edge rule
+ * next to triangles as OpenSubdiv's `TRI_SUB_SMOOTH` does.
  *
  * The mask reports weights over old vertices only: a face point's weights are
  * expanded into its vertices (1/|f| each), and the edge and vertex rules add
@@ -65,8 +66,10 @@ public:
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
-  explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth)
-    : With_sharp_rules<Catmull_clark_mask, Mesh, FT, Tagged>(Uniform_bspline_scheme<FT>(3)), m_corners(corners)
+  explicit Catmull_clark_mask(Border_corners corners = Border_corners::smooth,
+                              Triangle_subdivision triangles = Triangle_subdivision::catmark)
+    : With_sharp_rules<Catmull_clark_mask, Mesh, FT, Tagged>(Uniform_bspline_scheme<FT>(3)), m_corners(corners),
+      m_triangles(triangles)
   {}
 
   /// the same rules, with the same options, for another mesh type and number
@@ -74,11 +77,12 @@ public:
   template <class OtherMesh, class OtherFT, bool OtherTagged = false>
   Catmull_clark_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Catmull_clark_mask<OtherMesh, OtherFT, OtherTagged>(m_corners);
+    return Catmull_clark_mask<OtherMesh, OtherFT, OtherTagged>(m_corners, m_triangles);
   }
 
   std::string name() const { return "Catmull-Clark"; }
   Border_corners border_corners() const { return m_corners; }
+  Triangle_subdivision triangle_subdivision() const { return m_triangles; }
   bool is_interpolating() const { return false; }
 
   template <class Accumulator>
@@ -101,15 +105,38 @@ public:
 
 private:
   template <class Accumulator>
-  static void smooth_edge_point(const Edge_view<Mesh>& e, Accumulator& acc)
+  void smooth_edge_point(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
     const Mesh& mesh = e.mesh();
     const halfedge_descriptor h = e.halfedge();
     const FT quarter = FT(1) / FT(4);
+    if(m_triangles == Triangle_subdivision::smooth && touches_triangle(mesh, h)) {
+      const FT face_weight = (triangle_face_weight(mesh, h) + triangle_face_weight(mesh, opposite(h, mesh))) / FT(2);
+      const FT end_weight = (FT(1) - FT(2) * face_weight) / FT(2);
+      acc.add(source(h, mesh), end_weight);
+      acc.add(target(h, mesh), end_weight);
+      add_face_point(mesh, h, face_weight, acc);
+      add_face_point(mesh, opposite(h, mesh), face_weight, acc);
+      return;
+    }
     acc.add(source(h, mesh), quarter);
     acc.add(target(h, mesh), quarter);
     add_face_point(mesh, h, quarter, acc);
     add_face_point(mesh, opposite(h, mesh), quarter, acc);
+  }
+
+  static bool is_triangle(const Mesh& mesh, halfedge_descriptor h)
+  {
+    return next(next(next(h, mesh), mesh), mesh) == h;
+  }
+  static bool touches_triangle(const Mesh& mesh, halfedge_descriptor h)
+  {
+    return is_triangle(mesh, h) || is_triangle(mesh, opposite(h, mesh));
+  }
+  // the weight of the face point of face(h) in the edge rule of `Triangle_subdivision::smooth`
+  static FT triangle_face_weight(const Mesh& mesh, halfedge_descriptor h)
+  {
+    return is_triangle(mesh, h) ? FT(47) / FT(100) : FT(1) / FT(4);
   }
 
   template <class Accumulator>
@@ -155,6 +182,7 @@ private:
   }
 
   Border_corners m_corners;
+  Triangle_subdivision m_triangles;
 };
 
 } // namespace Subdiv

@@ -49,6 +49,52 @@ enum class Border_corners {
 
 /*!
  * \ingroup PkgSubdivMasks
+ * OpenSubdiv's boundary interpolation (`Sdc::Options::VtxBoundaryInterpolation`;
+ * RenderMan's and USD's "interpolateBoundary"): the named parameter
+ * `boundary_interpolation` of `loop_subdivision()`,
+ * `catmull_clark_subdivision()` and `subdivide()`. Border edges are
+ * infinitely sharp in all three.
+ */
+enum class Boundary_interpolation {
+  /// the points of `edges_only`, but the faces at the border have no limit
+  /// surface: with a `face_hole_map`, `subdivide()` makes them holes
+  none,
+  /// border vertices follow the border curve (`Border_corners::smooth`, the default)
+  edges_only,
+  /// and a border vertex with a single face stays where it is (`Border_corners::sharp`)
+  edges_and_corners
+};
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The edge rule of Catmull-Clark next to a triangle of the input (after one
+ * level every face is a quad, so it matters on the first level only).
+ */
+enum class Triangle_subdivision {
+  /// the Catmull-Clark edge rule everywhere (OpenSubdiv's `TRI_SUB_CATMARK`,
+  /// USD's "catmullClark", CGAL's rule; the default)
+  catmark,
+  /// OpenSubdiv's `TRI_SUB_SMOOTH` (USD's "smooth"): on an interior edge with a
+  /// triangle on either side, each triangle's face point weighs 47/100
+  /// instead of 1/4; the edge point is \f$ w_v (v_0 + v_1) + w_f (f_0 + f_1)
+  /// \f$ with \f$ w_f \f$ the mean of the two faces' weights and \f$ w_v =
+  /// (1 - 2 w_f) / 2 \f$. The constant is OpenSubdiv's, chosen by experiment
+  /// to round the limit surface over triangles.
+  smooth
+};
+
+namespace internal {
+
+/// the `Border_corners` of the masks under a boundary interpolation
+inline Border_corners border_corners_for(Boundary_interpolation boundary)
+{
+  return boundary == Boundary_interpolation::edges_and_corners ? Border_corners::sharp : Border_corners::smooth;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSubdivMasks
  * The rule a vertex is refined with, as OpenSubdiv's `Sdc::Crease` names
  * them, from the number of sharp edges at the vertex (border edges are
  * sharp) and its own sharpness: `smooth` with none, `dart` with one (refined
@@ -307,6 +353,26 @@ Border_corners border_corners_of(const Mask& mask)
   else {
     (void)mask;
     return Border_corners::smooth;
+  }
+}
+
+template <class Mask, class = void>
+struct Has_triangle_subdivision : std::false_type
+{};
+template <class Mask>
+struct Has_triangle_subdivision<Mask, std::void_t<decltype(std::declval<const Mask&>().triangle_subdivision())>>
+  : std::true_type
+{};
+
+/// the `Triangle_subdivision` option of a mask (catmark for masks without one)
+template <class Mask>
+Triangle_subdivision triangle_subdivision_of(const Mask& mask)
+{
+  if constexpr(Has_triangle_subdivision<Mask>::value)
+    return mask.triangle_subdivision();
+  else {
+    (void)mask;
+    return Triangle_subdivision::catmark;
   }
 }
 
