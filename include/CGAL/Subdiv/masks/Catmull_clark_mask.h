@@ -109,20 +109,17 @@ private:
   {
     const Mesh& mesh = e.mesh();
     const halfedge_descriptor h = e.halfedge();
-    const FT quarter = FT(1) / FT(4);
+    // Catmark: every weight is 1/4; the smooth triangle rule moves weight from the ends to a triangle's face point
+    FT face_weight = FT(1) / FT(4);
+    FT end_weight = face_weight;
     if(m_triangles == Triangle_subdivision::smooth && touches_triangle(mesh, h)) {
-      const FT face_weight = (triangle_face_weight(mesh, h) + triangle_face_weight(mesh, opposite(h, mesh))) / FT(2);
-      const FT end_weight = (FT(1) - FT(2) * face_weight) / FT(2);
-      acc.add(source(h, mesh), end_weight);
-      acc.add(target(h, mesh), end_weight);
-      add_face_point(mesh, h, face_weight, acc);
-      add_face_point(mesh, opposite(h, mesh), face_weight, acc);
-      return;
+      face_weight = (triangle_face_weight(mesh, h) + triangle_face_weight(mesh, opposite(h, mesh))) / FT(2);
+      end_weight = (FT(1) - FT(2) * face_weight) / FT(2);
     }
-    acc.add(source(h, mesh), quarter);
-    acc.add(target(h, mesh), quarter);
-    add_face_point(mesh, h, quarter, acc);
-    add_face_point(mesh, opposite(h, mesh), quarter, acc);
+    acc.add(source(h, mesh), end_weight);
+    acc.add(target(h, mesh), end_weight);
+    add_face_point(mesh, h, face_weight, acc);
+    add_face_point(mesh, opposite(h, mesh), face_weight, acc);
   }
 
   static bool is_triangle(const Mesh& mesh, halfedge_descriptor h)
