@@ -16,7 +16,9 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <string>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Subdiv {
@@ -36,6 +38,26 @@ auto tagged_sharpness(const NamedParameters& np, Key key)
   }
 }
 
+/// the sharpness of an edge and of a vertex in the maps of `np` (two
+/// callables; 0 without a map)
+template <class PolygonMesh, class NamedParameters>
+auto sharpness_readers(const NamedParameters& np)
+{
+  using GT = boost::graph_traits<PolygonMesh>;
+  return std::make_pair(
+    [&np](typename GT::edge_descriptor e) { return tagged_sharpness<edge_sharpness_map_t>(np, e); },
+    [&np](typename GT::vertex_descriptor v) { return tagged_sharpness<vertex_sharpness_map_t>(np, v); });
+}
+
+/// the tags of `np` checked by `Sharp_level::check_tags` (a negative or NaN
+/// sharpness is refused), before the mesh or a map is changed
+template <class FT, class PolygonMesh, class NamedParameters>
+void check_sharpness_tags(const PolygonMesh& mesh, const NamedParameters& np, const std::string& scheme)
+{
+  const auto readers = sharpness_readers<PolygonMesh>(np);
+  Sharp_level<PolygonMesh, FT>::check_tags(mesh, readers.first, readers.second, scheme);
+}
+
 /*
  * One level of `subdivide()` with sharpness tags: the tags of the level are
  * read from the maps of `np`, the mask refines with them, and the children's
@@ -47,20 +69,13 @@ void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParam
   static_assert(Takes_sharpness_tags<Mask>::value,
                 "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
   using parameters::get_parameter;
-  using GT = boost::graph_traits<PolygonMesh>;
   using FT = typename Mask::Number_type;
   const Crease_method method =
     parameters::choose_parameter(get_parameter(np, crease_method_t()), Crease_method::uniform);
   const auto edges = get_parameter(np, edge_sharpness_map_t());
   const auto vertices = get_parameter(np, vertex_sharpness_map_t());
-  const auto edge_sharpness = [&](typename GT::edge_descriptor e) {
-    return tagged_sharpness<edge_sharpness_map_t>(np, e);
-  };
-  const auto vertex_sharpness = [&](typename GT::vertex_descriptor v) {
-    return tagged_sharpness<vertex_sharpness_map_t>(np, v);
-  };
-  const Sharp_level<PolygonMesh, FT> tags(mesh, edge_sharpness, vertex_sharpness, method, border_corners_of(mask),
-                                          mask.name());
+  const auto readers = sharpness_readers<PolygonMesh>(np);
+  const Sharp_level<PolygonMesh, FT> tags(mesh, readers.first, readers.second, method, border_corners_of(mask));
   using Edges = std::remove_const_t<decltype(edges)>;
   using Vertices = std::remove_const_t<decltype(vertices)>;
   Sharpness_writer<PolygonMesh, FT, Edges, Vertices> writer(mesh, tags, &edges, &vertices);
@@ -198,6 +213,10 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
                                                     : internal::Isolated_check::allow;
   internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated_check);
+  constexpr bool tagged = !parameters::is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
+                          !parameters::is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value;
+  if constexpr(tagged)
+    internal::check_sharpness_tags<typename Mask::Number_type>(mesh, np, mask.name());
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
@@ -243,8 +262,6 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     if(levels > 0 && choose_parameter(get_parameter(np, internal::boundary_interpolation_t()),
                                       Boundary_interpolation::edges_only) == Boundary_interpolation::none)
       internal::make_border_faces_holes(mesh, get_parameter(np, internal::face_hole_map_t()), np);
-  constexpr bool tagged = !parameters::is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
-                          !parameters::is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value;
   for(int level = 0; level < levels; ++level) {
     if constexpr(tagged)
       internal::refine_with_sharpness(mesh, mask, np, refine_one_with_holes);

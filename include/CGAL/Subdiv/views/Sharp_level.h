@@ -48,28 +48,40 @@ public:
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using edge_descriptor = typename GT::edge_descriptor;
 
-  /// reads `edge_sharpness(e)` and `vertex_sharpness(v)` (callables) for every
-  /// edge and vertex of `mesh`; throws `Bad_input` naming the first negative
-  /// or NaN value (`scheme` names the caller in the message)
+  /// throws `Bad_input` naming the first edge or vertex (by its ordinal)
+  /// whose `edge_sharpness(e)` or `vertex_sharpness(v)` (callables) is
+  /// negative or NaN (`scheme` names the caller in the message): a user's
+  /// tags are checked by this before anything is changed
+  template <class EdgeSharpness, class VertexSharpness>
+  static void check_tags(const Mesh& mesh, const EdgeSharpness& edge_sharpness, const VertexSharpness& vertex_sharpness,
+                         const std::string& scheme)
+  {
+    const Mesh_numbering<Mesh> number(mesh);
+    for(std::size_t e = 0; e < num_edges(mesh); ++e)
+      require(edge_sharpness(number.edge(e)) >= 0,
+              scheme + ": the sharpness of edge " + std::to_string(e) + " is negative or NaN");
+    for(std::size_t i = 0; i < num_vertices(mesh); ++i)
+      require(vertex_sharpness(number.vertex(i)) >= 0,
+              scheme + ": the sharpness of vertex " + std::to_string(i) + " is negative or NaN");
+  }
+
+  /// reads `edge_sharpness(e)` and `vertex_sharpness(v)` (callables, whose
+  /// values `check_tags` accepts) for every edge and vertex of `mesh`
   template <class EdgeSharpness, class VertexSharpness>
   Sharp_level(const Mesh& mesh, const EdgeSharpness& edge_sharpness, const VertexSharpness& vertex_sharpness,
-              Crease_method method, Border_corners corners, const std::string& scheme)
+              Crease_method method, Border_corners corners)
     : m_mesh(&mesh), m_number(mesh), m_method(method), m_corners(corners)
   {
     const std::size_t edge_count = num_edges(mesh), vertex_count = num_vertices(mesh);
     m_edge.reserve(edge_count);
     for(std::size_t e = 0; e < edge_count; ++e) {
       const edge_descriptor ed = m_number.edge(e);
-      const auto value = edge_sharpness(ed);
-      require(value >= 0, scheme + ": the sharpness of edge " + std::to_string(e) + " is negative or NaN");
-      m_edge.push_back(CGAL::is_border(ed, mesh) ? Rules::infinite() : S(value));
+      m_edge.push_back(CGAL::is_border(ed, mesh) ? Rules::infinite() : S(edge_sharpness(ed)));
     }
     m_vertex.reserve(vertex_count);
     for(std::size_t i = 0; i < vertex_count; ++i) {
       const vertex_descriptor v = m_number.vertex(i);
-      const auto value = vertex_sharpness(v);
-      require(value >= 0, scheme + ": the sharpness of vertex " + std::to_string(i) + " is negative or NaN");
-      m_vertex.push_back(pinned_corner(v) ? Rules::infinite() : S(value));
+      m_vertex.push_back(pinned_corner(v) ? Rules::infinite() : S(vertex_sharpness(v)));
     }
     m_child_half.assign(2 * edge_count, S(0));
     m_records.resize(vertex_count);
