@@ -240,7 +240,7 @@ subdiv_surface_error(surface_garbage 1 "'[^']*garbage.off' line 2: header says 4
 subdiv_surface_error(surface_not_obj 1 "'[^']*not_a_mesh.obj' holds no faces"
   ARGS surface ${SUBDIV_CLI_DIR}/not_a_mesh.obj ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_non_manifold_edge 1
-  "'[^']*three_faces_on_an_edge.off' is not a manifold polygon mesh: the edge from vertex 0 \\(0 0 0\\) to vertex 1 \\(1 0 0\\) belongs to 3 faces \\(--repair"
+  "'[^']*three_faces_on_an_edge.off' is not a manifold polygon mesh: the edge from vertex 0 \\(0 0 0\\) to vertex 1 \\(1 0 0\\) belongs to 3 faces \\(--split-non-manifold refines it as OpenSubdiv does, --repair makes a manifold mesh of it\\)"
   ARGS surface ${SUBDIV_CLI_DIR}/three_faces_on_an_edge.off ${mesh_out} --scheme loop --levels 1)
 subdiv_surface_error(surface_non_manifold_vertex 1 "vertex 0 \\(0 0 0\\) is non-manifold \\(its faces form 2 separate fans\\)"
   ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme loop --levels 1)
@@ -357,6 +357,61 @@ subdiv_surface_error(surface_bad_boundary_option 2 "--boundary is none, edges or
   --boundary sharp)
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
+subdiv_surface_error(surface_tags_with_limit 1 "creases, corners, holes and boundary modes \\('[^']*catmark_cube_creases1.obj' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles\\): --limit and --displace do not take them yet"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme catmull-clark --levels 1 --limit)
+# --sharp-angle (CGAL::Subdiv::mark_sharp_edges): the cube's normals make 90
+# degrees at its 12 edges, so 60 makes them all infinitely sharp (24 halves
+# of sharpness 10 one level down), 100 none
+string(REPEAT "t crease 2/1/0 [0-9]+ [0-9]+ 10\n" 24 sharp_halves)
+subdiv_cli_test(surface_sharp_angle ARGS surface ${SUBDIV_CLI_DIR}/cube.off -o @WORK@/out.obj --scheme catmull-clark
+  --levels 1 --sharp-angle 60
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  STDERR_REGEX "^cgal-subdiv: note: --sharp-angle 60 made 12 edges infinitely sharp\n$"
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt creasemethod 0/0/1 normal\n${sharp_halves}$")
+subdiv_cli_test(surface_sharp_angle_above_every_edge ARGS surface ${SUBDIV_CLI_DIR}/cube.off -o @WORK@/out.obj
+  --scheme catmull-clark --levels 1 --sharp-angle 100
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  STDERR_REGEX "^cgal-subdiv: note: --sharp-angle 100 made 0 edges infinitely sharp\n$"
+  FILE @WORK@/out.obj
+  FILE_NOT_REGEX "t crease [0-9]")
+foreach(bad "200|--sharp-angle is an angle in degrees, from 0 to 180, not '200'" "-1|--sharp-angle" "sharp|--sharp-angle")
+  string(REPLACE "|" ";" parts "${bad}")
+  list(GET parts 0 value)
+  list(GET parts 1 message)
+  subdiv_surface_error(surface_sharp_angle_${value} 2 "${message}"
+    ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out} --scheme catmull-clark --levels 1 --sharp-angle ${value})
+endforeach()
+subdiv_surface_error(surface_sharp_angle_other_scheme 1 "--scheme doo-sabin does not take"
+  ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out} --scheme doo-sabin --levels 1 --sharp-angle 60)
+# --split-non-manifold (CGAL::Subdiv::split_non_manifold): the three
+# triangles on one edge become three sheets (the edge's ends copied twice
+# each, corners), the bowtie's vertex two corners; a manifold file is read as
+# it is; the quadpole's folded quads keep their zero-length edges
+subdiv_cli_test(surface_split_non_manifold_edge ARGS surface ${SUBDIV_CLI_DIR}/three_faces_on_an_edge.off ${mesh_out}
+  --scheme loop --levels 1 --split-non-manifold
+  OUTPUT @WORK@/out.off VERTICES 18 FACES 12
+  STDERR_REGEX "^cgal-subdiv: note: split the non-manifold soup of '[^']*three_faces_on_an_edge.off': 1 non-manifold edge, 2 non-manifold vertices \\(2 made corners\\), 4 vertices copied\n$")
+subdiv_cli_test(surface_split_bowtie_corners ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off -o @WORK@/out.obj
+  --scheme loop --levels 1 --split-non-manifold
+  OUTPUT @WORK@/out.obj VERTICES 12 FACES 8
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt corner 1/1/0 [0-9]+ 10\nt corner 1/1/0 [0-9]+ 10\n$")
+subdiv_cli_test(surface_split_manifold_input ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out}
+  --scheme catmull-clark --levels 1 --split-non-manifold
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24 STDERR_LINES 0)
+subdiv_cli_test(surface_split_quadpole ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_nonman_quadpole8.obj
+  ${mesh_out} --scheme catmull-clark --levels 2 --split-non-manifold
+  OUTPUT @WORK@/out.off VERTICES 288 FACES 256
+  STDERR_REGEX "8 non-manifold edges, 1 non-manifold vertex \\(1 made corners\\), 7 vertices copied")
+subdiv_surface_error(surface_split_unsplittable 1
+  "'[^']*catmark_nonman_edges.obj' cannot be split into a manifold mesh \\(--split-non-manifold\\): face 24 passes twice through vertex 52 \\(1.25 -0.3 1.08\\), and its other faces join the two passes into one vertex"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_nonman_edges.obj ${mesh_out} --scheme catmull-clark --levels 1
+  --split-non-manifold)
+subdiv_surface_error(surface_split_and_repair 2 "--repair and --split-non-manifold are two ways to read a non-manifold INPUT: one at a time"
+  ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme loop --levels 1 --split-non-manifold --repair)
+subdiv_surface_error(surface_split_other_scheme 1 "--scheme doo-sabin does not take"
+  ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme doo-sabin --levels 1 --split-non-manifold)
 
 # --- SIGTERM while writing removes the temporary file ---------------------------
 find_program(SUBDIV_SH sh)

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace cgal_subdiv {
@@ -96,15 +97,15 @@ std::string describe(const Mesh_counts& c)
   return std::to_string(c.vertices) + " V, " + std::to_string(c.edges) + " E, " + std::to_string(c.faces) + " F";
 }
 
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+Surface read_surface(const std::string& path, Soup_fix fix, std::vector<std::string>& notes,
                      std::vector<std::size_t>* file_numbers)
 {
   const Mesh_format format = mesh_format(path, "INPUT");
   // every index in range, every coordinate finite, before CGAL sees anything
-  return surface_from_soup(read_mesh_soup(path, format), path, format, repair, notes, file_numbers);
+  return surface_from_soup(read_mesh_soup(path, format), path, format, fix, notes, file_numbers);
 }
 
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+Surface read_surface(const std::string& path, Soup_fix fix, std::vector<std::string>& notes,
                      std::vector<std::size_t>* file_numbers, File_tags& tags)
 {
   const Mesh_format format = mesh_format(path, "INPUT");
@@ -112,7 +113,7 @@ Surface read_surface(const std::string& path, bool repair, std::vector<std::stri
   tags.tags = std::move(soup.tags);
   soup.tags.clear();
   tags.file_vertices = soup.points.size();
-  return surface_from_soup(soup, path, format, repair, notes, file_numbers);
+  return surface_from_soup(soup, path, format, fix, notes, file_numbers);
 }
 
 Largest_coordinate largest_coordinate(const Surface& mesh)
@@ -237,9 +238,8 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary, co
   std::ostream& out = file.stream();
   const auto np = CGAL::parameters::stream_precision(17);
   // OFF, PLY and STL have no hole tags: the faces that are holes are left out
-  const bool has_holes = mesh.property_map<Surface::Face_index, bool>(face_hole_name).second;
-  const Surface without = has_holes && format != Mesh_format::obj ? without_holes(mesh) : Surface();
-  const Surface& drawn = has_holes && format != Mesh_format::obj ? without : mesh;
+  const std::optional<Surface> without = format != Mesh_format::obj ? without_holes(mesh) : std::nullopt;
+  const Surface& drawn = without ? *without : mesh;
   bool ok = true;
   {
     Captured_cerr quiet;
@@ -290,9 +290,10 @@ Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, in
                                  const Level_callback& on_level, const Sharp_options* tags)
 {
   if(tags != nullptr && !scheme.run_sharp)
-    throw Input_error("--scheme " + scheme.name +
-                      " does not take OpenSubdiv's crease, corner and boundary tags yet (loop, loop-warren and "
-                      "catmull-clark do)");
+    throw Input_error(
+      "--scheme " + scheme.name +
+      " does not take OpenSubdiv's crease, corner and boundary tags yet, nor --sharp-angle and the boundary "
+      "options (loop, loop-warren and catmull-clark do)");
   const auto run = [&](int n) {
     if(tags != nullptr)
       scheme.run_sharp(mesh, n, max_memory, *tags);

@@ -71,14 +71,15 @@ std::string describe(const Mesh_counts& counts);
  * reads `path` (format from the extension) with the checked reader of
  * mesh_soup.h, drops the vertices that no face uses (with a note), and builds
  * the mesh with CGAL::Polygon_mesh_processing once the soup is known to be a
- * manifold polygon mesh. With `repair`, a soup that is not one is repaired and
- * oriented first (repair_polygon_soup, orient_polygon_soup) and a note says so.
+ * manifold polygon mesh. A soup that is not one is refused, or `fix`ed
+ * (surface_from_soup.h: repaired, or split as OpenSubdiv refines it) with a
+ * note.
  * What the file holds besides points and faces is ignored, with a note.
  * \throws Input_error saying why the file cannot be used: missing, not
  *         readable, malformed (naming the line or byte), not a manifold
  *         polygon mesh (naming a face, an edge or a vertex), no faces
  */
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+Surface read_surface(const std::string& path, Soup_fix fix, std::vector<std::string>& notes,
                      std::vector<std::size_t>* file_numbers = nullptr);
 
 /// the tag lines (t) of an OBJ file, and the number of vertices of the file
@@ -90,7 +91,7 @@ struct File_tags
 
 /// `read_surface` that also hands over the tag lines, which are then not
 /// noted as ignored
-Surface read_surface(const std::string& path, bool repair, std::vector<std::string>& notes,
+Surface read_surface(const std::string& path, Soup_fix fix, std::vector<std::string>& notes,
                      std::vector<std::size_t>* file_numbers, File_tags& tags);
 
 /// the largest coordinate (in magnitude) of a mesh, and where it is

@@ -44,10 +44,27 @@ void apply_sharp_options(const Parsed_args& args, Sharp_options& options)
   }
 }
 
+// --sharp-angle: the edges where the surface bends more become infinitely
+// sharp, with the file's creases
+void apply_sharp_angle(const Parsed_args& args, Surface& mesh, Sharp_options& options, std::vector<std::string>& notes)
+{
+  if(!args.has("--sharp-angle"))
+    return;
+  const double angle = CGAL::to_double(args.number("--sharp-angle", Exact(0)));
+  if(!(angle >= 0 && angle <= 180))
+    throw Usage_error("--sharp-angle is an angle in degrees, from 0 to 180, not '" + args.value("--sharp-angle") + "'");
+  const std::size_t marked = mark_sharp_angle(mesh, angle);
+  notes.push_back("--sharp-angle " + args.value("--sharp-angle") + " made " + std::to_string(marked) +
+                  (marked == 1 ? " edge" : " edges") + " infinitely sharp");
+  options.present = true;
+}
+
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
-                           [--displace HEIGHTS] [--repair] [--max-memory SIZE]
+                           [--displace HEIGHTS] [--repair] [--split-non-manifold]
+                           [--max-memory SIZE]
                            [--boundary MODE] [--crease-method METHOD]
-                           [--smooth-triangles] [--binary] [--verbose]
+                           [--smooth-triangles] [--sharp-angle DEGREES]
+                           [--binary] [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -93,6 +110,12 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --repair              read INPUT as a polygon soup, repair and orient it
                         (CGAL::Polygon_mesh_processing::IO::read_polygon_mesh):
                         for files that are not manifold meshes as they stand
+  --split-non-manifold  read a non-manifold INPUT as OpenSubdiv refines it: split
+                        into a manifold mesh (CGAL's orient_polygon_soup) whose
+                        split edges are sharp and whose non-manifold vertices
+                        are corners, unless on a non-manifold crease (loop,
+                        loop-warren, catmull-clark; the tags of INPUT apply to
+                        every copy of a vertex)
   --boundary MODE       none, edges or edges-and-corners: OpenSubdiv's boundary
                         interpolation (default edges, or INPUT's tag); none
                         refines as edges and makes the faces at the border
@@ -102,6 +125,10 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
                         (default uniform, or INPUT's tag)
   --smooth-triangles    catmull-clark: OpenSubdiv's TRI_SUB_SMOOTH edge rule
                         next to triangles (or INPUT's tag)
+  --sharp-angle DEGREES loop, loop-warren, catmull-clark: every edge whose two
+                        faces' normals make more than DEGREES (0 to 180) becomes
+                        infinitely sharp (CGAL's detect_sharp_edges), with the
+                        creases of INPUT
   --max-memory SIZE     refuse, before any work, a run whose output would take
                         more memory than SIZE (default: this machine's memory),
                         e.g. 8G, 512MB, 2GiB; the estimate is the output faces
@@ -120,10 +147,11 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 )";
 
 const std::vector<Option_spec> surface_options = {
-  {{"-o", "--output"}, true},     {{"--scheme"}, true},   {{"--levels"}, true},         {{"--repair"}, false},
-  {{"--limit"}, false},           {{"--displace"}, true}, {{"-v", "--verbose"}, false}, {{"-h", "--help"}, false},
-  {{"--max-memory"}, true},       {{"--binary"}, false},  {{"--boundary"}, true},       {{"--crease-method"}, true},
-  {{"--smooth-triangles"}, false}};
+  {{"-o", "--output"}, true},      {{"--scheme"}, true},      {{"--levels"}, true},
+  {{"--repair"}, false},           {{"--limit"}, false},      {{"--displace"}, true},
+  {{"-v", "--verbose"}, false},    {{"-h", "--help"}, false}, {{"--max-memory"}, true},
+  {{"--binary"}, false},           {{"--boundary"}, true},    {{"--crease-method"}, true},
+  {{"--smooth-triangles"}, false}, {{"--sharp-angle"}, true}, {{"--split-non-manifold"}, false}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -210,7 +238,12 @@ int surface_command(const std::vector<std::string>& arguments)
   std::vector<std::string> notes;
   std::vector<std::size_t> file_numbers;
   File_tags file_tags;
-  Surface mesh = read_surface(input, args.has("--repair"), notes, &file_numbers, file_tags);
+  if(args.has("--repair") && args.has("--split-non-manifold"))
+    throw Usage_error("--repair and --split-non-manifold are two ways to read a non-manifold INPUT: one at a time");
+  const Soup_fix fix = args.has("--repair")               ? Soup_fix::repair
+                       : args.has("--split-non-manifold") ? Soup_fix::split_non_manifold
+                                                          : Soup_fix::none;
+  Surface mesh = read_surface(input, fix, notes, &file_numbers, file_tags);
   // OpenSubdiv's tags (OBJ): the sharpness maps of the mesh and the options
   Sharp_options sharp_options;
   if(!file_tags.tags.empty() && args.has("--repair"))
@@ -219,11 +252,13 @@ int surface_command(const std::vector<std::string>& arguments)
   else if(!file_tags.tags.empty())
     sharp_options = apply_obj_tags(file_tags.tags, file_tags.file_vertices, mesh, file_numbers, input, notes);
   apply_sharp_options(args, sharp_options);
+  apply_sharp_angle(args, mesh, sharp_options, notes);
+  sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
   if(tagged && (displace || args.has("--limit")))
-    throw Input_error("'" + input +
-                      "' has crease, corner or boundary tags: --limit and --displace do not take "
-                      "them yet");
+    throw Input_error("creases, corners, holes and boundary modes ('" + input +
+                      "' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles): --limit and "
+                      "--displace do not take them yet");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();

@@ -44,7 +44,7 @@ std::vector<Surface_demo_row> run_surface_demo(const std::vector<Demo_mesh>& mes
     Surface original;
     std::string read_failure;
     try {
-      original = read_surface(input.path, false, notes);
+      original = read_surface(input.path, Soup_fix::none, notes);
     } catch(const std::exception& e) {
       read_failure = e.what();
     }

@@ -5,6 +5,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Subdiv/split_non_manifold.h>
 
 #include <algorithm>
 #include <iterator>
@@ -30,6 +31,28 @@ std::string point_text(const Point& p)
 
 using Polygon = std::vector<std::size_t>;
 
+// "vertex 7 (0 1 0)": the number the file gives it, if known, and its point
+std::string vertex_name(std::size_t v, const std::vector<Point>& points, const std::vector<std::size_t>& file_numbers)
+{
+  return "vertex " + (v < file_numbers.size() ? std::to_string(file_numbers[v]) + " " : std::string()) +
+         point_text(points[v]);
+}
+
+// the first face that passes twice through a vertex (a zero-length edge,
+// which no halfedge mesh holds), named; empty if there is none
+std::string repeated_vertex_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
+                                    const std::vector<std::size_t>& file_numbers)
+{
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    Polygon sorted = polygons[f]; // its size and indices checked by the reader
+    std::sort(sorted.begin(), sorted.end());
+    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+    if(twice != sorted.end())
+      return "face " + std::to_string(f) + " passes twice through " + vertex_name(*twice, points, file_numbers);
+  }
+  return "";
+}
+
 /*
  * Why a polygon soup is not a manifold polygon mesh, naming the first face,
  * edge or vertex at fault: vertex v by its number in the file
@@ -39,19 +62,10 @@ using Polygon = std::vector<std::size_t>;
 std::string soup_problem(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
                          const std::vector<std::size_t>& file_numbers)
 {
-  // "vertex 7 (0 1 0)": the number the file gives it, if known, and its point
-  const auto name = [&](std::size_t v) {
-    return "vertex " + (v < file_numbers.size() ? std::to_string(file_numbers[v]) + " " : std::string()) +
-           point_text(points[v]);
-  };
-  for(std::size_t f = 0; f < polygons.size(); ++f) {
-    const Polygon& poly = polygons[f]; // its size and indices checked by the reader
-    Polygon sorted = poly;
-    std::sort(sorted.begin(), sorted.end());
-    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
-    if(twice != sorted.end())
-      return "face " + std::to_string(f) + " passes twice through " + name(*twice);
-  }
+  const auto name = [&](std::size_t v) { return vertex_name(v, points, file_numbers); };
+  const std::string repeated = repeated_vertex_problem(points, polygons, file_numbers);
+  if(!repeated.empty())
+    return repeated;
   // edges: how many faces use each, and in which direction
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> directed;
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> undirected;
@@ -133,11 +147,48 @@ void to_cgal_soup(const Mesh_soup& soup, const std::string& path, std::size_t fi
       polygons[f].push_back(new_index[soup.indices[k]]);
 }
 
+// the soup split by CGAL::Subdiv::split_non_manifold, with OpenSubdiv's
+// sharpness of its non-manifold edges and vertices in the tag maps
+Surface split_soup(const std::vector<Point>& points, const std::vector<Polygon>& polygons, const std::string& path,
+                   std::vector<std::string>& notes, const std::vector<std::size_t>& file_numbers,
+                   std::vector<std::size_t>* file_numbers_out)
+{
+  Surface mesh;
+  const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
+  const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
+  CGAL::Subdiv::Non_manifold_split<Surface> split;
+  try {
+    split = CGAL::Subdiv::split_non_manifold(
+      points, polygons, mesh, CGAL::Subdiv::parameters::edge_sharpness_map(edges).vertex_sharpness_map(vertices));
+  } catch(const CGAL::Subdiv::Unsplittable_polygon& e) { // the reader checked everything else
+    throw Input_error("'" + path + "' cannot be split into a manifold mesh (--split-non-manifold): face " +
+                      std::to_string(e.polygon) + " passes twice through " +
+                      vertex_name(e.point, points, file_numbers) +
+                      ", and its other faces join the two passes into one vertex: the edge between them would "
+                      "go from that vertex to itself, which no halfedge mesh holds");
+  }
+  const auto count = [](std::size_t n, const std::string& one, const std::string& several) {
+    return std::to_string(n) + " " + (n == 1 ? one : several);
+  };
+  notes.push_back("split the non-manifold soup of '" + path +
+                  "': " + count(split.non_manifold_edges, "non-manifold edge", "non-manifold edges") + ", " +
+                  count(split.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") + " (" +
+                  std::to_string(split.corners) + " made corners), " +
+                  count(split.vertices.size() - points.size(), "vertex", "vertices") + " copied");
+  if(file_numbers_out) {
+    file_numbers_out->clear();
+    for(std::size_t origin : split.origin)
+      file_numbers_out->push_back(file_numbers[origin]);
+  }
+  return mesh;
+}
+
 } // namespace
 
-Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, bool repair,
+Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, Soup_fix fix,
                           std::vector<std::string>& notes, std::vector<std::size_t>* file_numbers_out)
 {
+  const bool repair = fix == Soup_fix::repair;
   notes.insert(notes.end(), soup.notes.begin(), soup.notes.end());
   if(!soup.tags.empty())
     notes.push_back("ignored " + std::to_string(soup.tags.size()) +
@@ -157,10 +208,15 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     if(polygons.empty())
       throw Input_error("'" + path + "' holds no faces once repaired (every face was degenerate)");
   }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+  const bool manifold = PMP::is_polygon_soup_a_polygon_mesh(polygons);
+  if(!manifold && fix == Soup_fix::split_non_manifold)
+    return split_soup(points, polygons, path, notes, file_numbers, file_numbers_out);
+  if(!manifold) {
     const std::string problem = soup_problem(points, polygons, file_numbers);
     throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
-                      (repair ? "" : " (--repair makes one of it)"));
+                      (repair ? ""
+                              : " (--split-non-manifold refines it as OpenSubdiv does, --repair makes a manifold "
+                                "mesh of it)"));
   }
   Surface mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);

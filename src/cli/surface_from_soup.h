@@ -18,19 +18,36 @@ namespace cgal_subdiv {
 
 using Surface = CGAL::Surface_mesh<Double_kernel::Point_3>;
 
+/// the maps the tags are kept in, on the mesh: "e:sharpness", "v:sharpness"
+/// (double), "f:hole" (bool); the split of a non-manifold soup writes the
+/// first two, the OBJ tags (surface_tags.h) all three
+inline constexpr const char* edge_sharpness_name = "e:sharpness";
+inline constexpr const char* vertex_sharpness_name = "v:sharpness";
+inline constexpr const char* face_hole_name = "f:hole";
+
+/// what is done with a soup that is not a manifold polygon mesh
+enum class Soup_fix {
+  none,              ///< nothing: it is refused, naming the face, edge or vertex at fault
+  repair,            ///< repair_polygon_soup and orient_polygon_soup (--repair)
+  split_non_manifold ///< CGAL::Subdiv::split_non_manifold, with OpenSubdiv's sharpness (--split-non-manifold)
+};
+
 /*
  * `soup` (read from `path`, in `format`) as a Surface_mesh: its notes are
  * added to `notes`, the vertices that no face uses are dropped (with a note),
  * and the mesh is built with CGAL::Polygon_mesh_processing once the soup is
- * known to be a manifold polygon mesh. With `repair`, a soup that is not one
- * is repaired and oriented first (repair_polygon_soup, orient_polygon_soup)
- * and a note says so. `file_numbers`, if given, receives the number in the
- * file of every vertex of the mesh (OBJ counts from 1); empty with `repair`,
- * which merges and splits vertices.
+ * known to be a manifold polygon mesh. A soup that is not one is refused,
+ * or (`fix`) repaired and oriented first (repair_polygon_soup,
+ * orient_polygon_soup), or split with the sharpness OpenSubdiv gives its
+ * non-manifold edges and vertices (in the maps of surface_tags.h), and a
+ * note says so. `file_numbers`, if given, receives the number in the file
+ * of every vertex of the mesh (OBJ counts from 1; the copies of a split
+ * vertex have its number); empty with `repair`, which merges and splits
+ * vertices.
  * \throws Input_error: no faces, or not a manifold polygon mesh (naming a
  *         face, an edge or a vertex: by its number in the file and its point)
  */
-Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, bool repair,
+Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, Soup_fix fix,
                           std::vector<std::string>& notes, std::vector<std::size_t>* file_numbers = nullptr);
 
 } // namespace cgal_subdiv

@@ -4,19 +4,23 @@
 
 #include "errors.h"
 
+#include <CGAL/Subdiv/mark_sharp_edges.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace cgal_subdiv {
 
-const char* const edge_sharpness_name = "e:sharpness";
-const char* const vertex_sharpness_name = "v:sharpness";
-const char* const face_hole_name = "f:hole";
-
 namespace {
+
+// the boundary mode of each `t interpolateboundary` value (RenderMan's numbering), for reading and writing
+constexpr std::array<CGAL::Subdiv::Boundary_interpolation, 3> interpolateboundary_modes = {
+  CGAL::Subdiv::Boundary_interpolation::none, CGAL::Subdiv::Boundary_interpolation::edges_and_corners,
+  CGAL::Subdiv::Boundary_interpolation::edges_only};
 
 using Edge_map = Surface::Property_map<Surface::Edge_index, double>;
 using Vertex_map = Surface::Property_map<Surface::Vertex_index, double>;
@@ -51,11 +55,11 @@ class Tag_reader
 public:
   Tag_reader(Surface& mesh, std::size_t file_vertices, const std::vector<std::size_t>& file_numbers,
              const std::string& path)
-    : m_mesh(mesh), m_path(path), m_vertex_of(file_vertices, Surface::null_vertex())
+    : m_mesh(mesh), m_path(path), m_copies_of(file_vertices)
   {
     for(Surface::Vertex_index v : mesh.vertices())
       if(v.idx() < file_numbers.size() && file_numbers[v.idx()] >= 1 && file_numbers[v.idx()] <= file_vertices)
-        m_vertex_of[file_numbers[v.idx()] - 1] = v;
+        m_copies_of[file_numbers[v.idx()] - 1].push_back(v);
   }
 
   void crease(const Obj_tag& tag)
@@ -66,12 +70,18 @@ public:
     const std::vector<double> values = sharpness_values(tag, tag.ints.size() / 2, at);
     Edge_map edges = m_mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
     for(std::size_t k = 0; k < values.size(); ++k) {
-      const Surface::Vertex_index a = vertex(tag.ints[2 * k], at), b = vertex(tag.ints[2 * k + 1], at);
-      const Surface::Halfedge_index h = m_mesh.halfedge(a, b);
-      if(h == Surface::null_halfedge())
+      bool joined = false; // by one edge, or by several between the copies of a split vertex
+      for(const Surface::Vertex_index a : copies(tag.ints[2 * k], at))
+        for(const Surface::Vertex_index b : copies(tag.ints[2 * k + 1], at)) {
+          const Surface::Halfedge_index h = m_mesh.halfedge(a, b);
+          if(h != Surface::null_halfedge()) {
+            edges[m_mesh.edge(h)] = std::max(edges[m_mesh.edge(h)], values[k]);
+            joined = true;
+          }
+        }
+      if(!joined)
         throw Input_error(at + "vertices " + std::to_string(tag.ints[2 * k]) + " and " +
                           std::to_string(tag.ints[2 * k + 1]) + " are not joined by an edge of the mesh");
-      edges[m_mesh.edge(h)] = values[k];
     }
   }
 
@@ -83,7 +93,8 @@ public:
     const std::vector<double> values = sharpness_values(tag, tag.ints.size(), at);
     Vertex_map vertices = m_mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
     for(std::size_t k = 0; k < values.size(); ++k)
-      vertices[vertex(tag.ints[k], at)] = values[k];
+      for(const Surface::Vertex_index v : copies(tag.ints[k], at))
+        vertices[v] = std::max(vertices[v], values[k]);
   }
 
   // faces numbered from 0 in the order of the file, which is the mesh's
@@ -102,20 +113,21 @@ public:
   }
 
 private:
-  Surface::Vertex_index vertex(long long number, const std::string& at) const
+  // the vertex of file vertex `number` (from 0), or its copies if the soup was split
+  const std::vector<Surface::Vertex_index>& copies(long long number, const std::string& at) const
   {
-    if(number < 0 || static_cast<unsigned long long>(number) >= m_vertex_of.size())
+    if(number < 0 || static_cast<unsigned long long>(number) >= m_copies_of.size())
       throw Input_error(at + "vertex " + std::to_string(number) + " is out of range (the file has " +
-                        std::to_string(m_vertex_of.size()) + " vertices, numbered from 0 in tags)");
-    const Surface::Vertex_index v = m_vertex_of[static_cast<std::size_t>(number)];
-    if(v == Surface::null_vertex())
+                        std::to_string(m_copies_of.size()) + " vertices, numbered from 0 in tags)");
+    const std::vector<Surface::Vertex_index>& copies = m_copies_of[static_cast<std::size_t>(number)];
+    if(copies.empty())
       throw Input_error(at + "vertex " + std::to_string(number) + " is in no face");
-    return v;
+    return copies;
   }
 
   Surface& m_mesh;
   const std::string& m_path;
-  std::vector<Surface::Vertex_index> m_vertex_of; // by file vertex, from 0
+  std::vector<std::vector<Surface::Vertex_index>> m_copies_of; // by file vertex, from 0
 };
 
 // the single integer of `t NAME 1/0/0 N`, or the single string of `t NAME 0/0/1 S`
@@ -149,9 +161,7 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
       if(tag.ints[0] < 0 || tag.ints[0] > 2)
         throw Input_error(at + "is 0 (none), 1 (edges and corners) or 2 (edges only), not " +
                           std::to_string(tag.ints[0]));
-      options.boundary = tag.ints[0] == 0   ? CGAL::Subdiv::Boundary_interpolation::none
-                         : tag.ints[0] == 1 ? CGAL::Subdiv::Boundary_interpolation::edges_and_corners
-                                            : CGAL::Subdiv::Boundary_interpolation::edges_only;
+      options.boundary = interpolateboundary_modes[static_cast<std::size_t>(tag.ints[0])];
     } else if(tag.name == "creasemethod") {
       require_one_value(tag, false, at);
       if(tag.strings[0] != "normal" && tag.strings[0] != "chaikin")
@@ -177,18 +187,24 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
   return options;
 }
 
+std::size_t mark_sharp_angle(Surface& mesh, double angle_in_degrees)
+{
+  const Edge_map edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
+  return CGAL::Subdiv::mark_sharp_edges(mesh, angle_in_degrees, edges);
+}
+
 bool has_sharpness(const Surface& mesh)
 {
   return mesh.property_map<Surface::Edge_index, double>(edge_sharpness_name).second ||
          mesh.property_map<Surface::Vertex_index, double>(vertex_sharpness_name).second;
 }
 
-Surface without_holes(const Surface& mesh)
+std::optional<Surface> without_holes(const Surface& mesh)
 {
+  if(!mesh.property_map<Surface::Face_index, bool>(face_hole_name).second)
+    return std::nullopt;
   Surface copy = mesh;
   const auto holes = copy.property_map<Surface::Face_index, bool>(face_hole_name);
-  if(!holes.second)
-    return copy;
   std::vector<Surface::Face_index> hole_faces;
   for(Surface::Face_index f : copy.faces())
     if(holes.first[f])
@@ -202,12 +218,8 @@ Surface without_holes(const Surface& mesh)
 void write_obj_tags(std::ostream& out, const Surface& mesh, const Sharp_options& options)
 {
   out.precision(17); // the values are floats in doubles (views/Sharpness.h): read back, they are the same
-  using Boundary = CGAL::Subdiv::Boundary_interpolation;
-  out << "t interpolateboundary 1/0/0 "
-      << (options.boundary == Boundary::none                ? 0
-          : options.boundary == Boundary::edges_and_corners ? 1
-                                                            : 2)
-      << '\n';
+  const auto mode = std::find(interpolateboundary_modes.begin(), interpolateboundary_modes.end(), options.boundary);
+  out << "t interpolateboundary 1/0/0 " << (mode - interpolateboundary_modes.begin()) << '\n';
   out << "t creasemethod 0/0/1 " << (options.method == CGAL::Subdiv::Crease_method::chaikin ? "chaikin" : "normal")
       << '\n';
   if(options.triangles == CGAL::Subdiv::Triangle_subdivision::smooth)

@@ -14,17 +14,12 @@
 #include <CGAL/Subdiv/views/Sharpness.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace cgal_subdiv {
-
-/// the maps the tags are kept in, on the mesh: "e:sharpness", "v:sharpness"
-/// (double), "f:hole" (bool)
-extern const char* const edge_sharpness_name;
-extern const char* const vertex_sharpness_name;
-extern const char* const face_hole_name;
 
 /// the options the tags give, besides the maps
 struct Sharp_options
@@ -53,11 +48,17 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
                              const std::vector<std::size_t>& file_numbers, const std::string& path,
                              std::vector<std::string>& notes);
 
+/// `CGAL::Subdiv::mark_sharp_edges`: every edge of `mesh` whose faces bend
+/// by more than `angle_in_degrees` becomes infinitely sharp in the edge
+/// sharpness map (made if the file had no creases); returns how many
+std::size_t mark_sharp_angle(Surface& mesh, double angle_in_degrees);
+
 /// whether `mesh` has sharpness maps (tags were read)
 bool has_sharpness(const Surface& mesh);
 
-/// a copy of `mesh` without its hole faces (for the formats that have no hole tags)
-Surface without_holes(const Surface& mesh);
+/// a copy of `mesh` without its hole faces (for the formats that have no hole
+/// tags), or nothing when `mesh` has no hole map
+std::optional<Surface> without_holes(const Surface& mesh);
 
 /// `options` and the sharp edges (not on the border), sharp vertices and
 /// holes of `mesh` as tag lines (`t interpolateboundary`, `t creasemethod`,

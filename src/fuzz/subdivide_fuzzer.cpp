@@ -5,10 +5,11 @@
 // checked reader of the command-line tool (src/cli/mesh_soup.h) accepts. The
 // first byte picks the format (its value modulo 4: OFF, OBJ, PLY, STL), the
 // second the scheme (modulo 9, in the order of `schemes` below), the third the
-// level count (modulo 3: 0, 1 or 2); the rest is the file. The soup is turned
-// into a Surface_mesh by `surface_from_soup`, as the tool does (without
-// --repair); soups it refuses, and those of more than 2000 faces (to keep
-// runs fast), are skipped. A refusal (Input_error of
+// level count (modulo 3: 0, 1 or 2) and, divided by 3, what is done with a
+// soup that is not a manifold mesh (modulo 3: refused, --repair,
+// --split-non-manifold); the rest is the file. The soup is turned into a
+// Surface_mesh by `surface_from_soup`, as the tool does; soups it refuses,
+// and those of more than 2000 faces (to keep runs fast), are skipped. A refusal (Input_error of
 // the reader, Bad_input of the library) is a fine answer; a result with a
 // non-finite point (unless the input had a coordinate beyond 1e300: overflow
 // of huge inputs is a known open issue) or that is not a valid polygon mesh
@@ -113,6 +114,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto format = static_cast<cgal_subdiv::Mesh_format>(data[0] % 4);
   const auto scheme = static_cast<Scheme>(data[1] % number_of_schemes);
   const int levels = data[2] % 3;
+  // what is done with a soup that is not a manifold mesh: refused, --repair, --split-non-manifold
+  const auto fix = static_cast<cgal_subdiv::Soup_fix>((data[2] / 3) % 3);
   Mesh_soup soup;
   try {
     soup = cgal_subdiv::parse_mesh_soup(reinterpret_cast<const char*>(data + 3), size - 3, format, "fuzz");
@@ -125,7 +128,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Mesh mesh;
   std::vector<std::string> notes;
   try {
-    mesh = cgal_subdiv::surface_from_soup(soup, "fuzz", format, false, notes);
+    mesh = cgal_subdiv::surface_from_soup(soup, "fuzz", format, fix, notes);
   } catch(const cgal_subdiv::Input_error&) {
     return 0;
   }
