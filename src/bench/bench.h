@@ -30,6 +30,10 @@ struct Soup
   std::vector<P3> points;
   std::vector<int> face_sizes;
   std::vector<int> indices; // the corners of face 0, then face 1, ...
+  // the sharp edges (OpenSubdiv's creases): vertex pairs and sharpness values,
+  // empty for the smooth inputs
+  std::vector<int> crease_pairs;
+  std::vector<float> crease_sharpness;
 };
 
 /// the soup as a mesh of any library whose `add_vertex(Point)` returns a

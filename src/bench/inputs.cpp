@@ -3,8 +3,11 @@
 //
 // subdiv-bench: the inputs (see inputs.h and src/bench/README.md).
 #include "inputs.h"
+#include "../cli/mesh_soup.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Subdiv/mark_sharp_edges.h>
+#include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -163,6 +166,77 @@ const File_input files[] = {
   {"spot", "odedstein/spot_control_mesh.obj"},
 };
 
+using Crease_map = Mesh::Property_map<Mesh::Edge_index, double>;
+
+// fandisk with creases where its faces bend by more than 30 degrees: a CAD
+// part's feature lines, infinitely sharp
+bool fandisk_with_sharp_angle(const std::string& mesh_dir, Mesh& mesh, std::string& why)
+{
+  const std::string path = mesh_dir + "/cgal/fandisk.off";
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty()) {
+    why = "cannot read " + path;
+    return false;
+  }
+  const Crease_map creases = mesh.add_property_map<Mesh::Edge_index, double>(crease_map_name, 0).first;
+  CGAL::Subdiv::mark_sharp_edges(mesh, 30, creases);
+  return true;
+}
+
+// OpenSubdiv's rook (777 faces, 280 creases of sharpness 7.9), read with the
+// command line's checked OBJ reader, scaled up by `levels` levels of
+// Catmull-Clark with its creases: semi-sharp creases of sharpness 7.9 - levels
+bool rook_scaled_up(const std::string& mesh_dir, int levels, Mesh& mesh, std::string& why)
+{
+  const std::string path = mesh_dir + "/opensubdiv/catmark_rook.obj";
+  cgal_subdiv::Mesh_soup soup;
+  try {
+    soup = cgal_subdiv::read_mesh_soup(path, cgal_subdiv::Mesh_format::obj);
+  } catch(const std::exception& e) {
+    why = e.what();
+    return false;
+  }
+  std::vector<Mesh::Vertex_index> vertices;
+  for(const auto& p : soup.points)
+    vertices.push_back(mesh.add_vertex(Point(p[0], p[1], p[2])));
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f) {
+    std::vector<Mesh::Vertex_index> face;
+    for(std::size_t k = soup.face_starts[f]; k < soup.face_starts[f + 1]; ++k)
+      face.push_back(vertices[soup.indices[k]]);
+    if(mesh.add_face(face) == Mesh::null_face()) {
+      why = path + ": face " + std::to_string(f) + " does not fit a Surface_mesh";
+      return false;
+    }
+  }
+  const Crease_map creases = mesh.add_property_map<Mesh::Edge_index, double>(crease_map_name, 0).first;
+  for(const cgal_subdiv::Obj_tag& tag : soup.tags)
+    if(tag.name == "crease" && tag.floats.size() == 1)
+      for(std::size_t k = 0; k + 1 < tag.ints.size(); k += 2) {
+        const auto a = static_cast<std::size_t>(tag.ints[k]), b = static_cast<std::size_t>(tag.ints[k + 1]);
+        const auto h =
+          a < vertices.size() && b < vertices.size() ? mesh.halfedge(vertices[a], vertices[b]) : Mesh::null_halfedge();
+        if(h == Mesh::null_halfedge()) {
+          why = path + " line " + std::to_string(tag.line) + ": a crease that is not an edge";
+          return false;
+        }
+        creases[mesh.edge(h)] = tag.floats[0];
+      }
+  CGAL::Subdiv::catmull_clark_subdivision(
+    mesh, CGAL::Subdiv::parameters::number_of_iterations(levels).edge_sharpness_map(creases));
+  return true;
+}
+
+// the sharp edges of the map, as OpenSubdiv's creases (vertex pairs in the soup's numbering)
+void add_creases(const Mesh& mesh, Soup& soup)
+{
+  const Crease_map creases = mesh.property_map<Mesh::Edge_index, double>(crease_map_name).first;
+  for(const Mesh::Edge_index e : mesh.edges())
+    if(creases[e] > 0) {
+      soup.crease_pairs.push_back(static_cast<int>(mesh.source(mesh.halfedge(e)).idx()));
+      soup.crease_pairs.push_back(static_cast<int>(mesh.target(mesh.halfedge(e)).idx()));
+      soup.crease_sharpness.push_back(static_cast<float>(creases[e]));
+    }
+}
+
 } // namespace
 
 std::vector<std::string> input_ids()
@@ -170,6 +244,8 @@ std::vector<std::string> input_ids()
   std::vector<std::string> ids = {"tri20k", "tri200k", "quad200k", "mixed", "border"};
   for(const File_input& file : files)
     ids.push_back(file.id);
+  ids.push_back("fandisk-creased");
+  ids.push_back("rook-creased");
   return ids;
 }
 
@@ -228,6 +304,15 @@ bool make_input(const std::string& id, bool quick, const std::string& mesh_dir, 
     mesh = border_patch(quick ? 50 : 160, random);
     flip_randomly(mesh, 0.3, random);
     kind = "tri patch with border";
+  } else if(id == "fandisk-creased") {
+    if(!fandisk_with_sharp_angle(mesh_dir, mesh, why))
+      return false;
+    kind = "fandisk, creases over 30 degrees,";
+  } else if(id == "rook-creased") {
+    const int levels = quick ? 1 : 2;
+    if(!rook_scaled_up(mesh_dir, levels, mesh, why))
+      return false;
+    kind = "OSD rook, semi-sharp creases, x" + std::to_string(1 << (2 * levels)) + ",";
   } else {
     const File_input* file = nullptr;
     for(const File_input& f : files)
@@ -260,6 +345,9 @@ bool make_input(const std::string& id, bool quick, const std::string& mesh_dir, 
   if(input.triangles)
     input.name += " (valence " + valence_range(mesh) + ")";
   input.soup = soup_of(mesh);
+  input.creased = mesh.property_map<Mesh::Edge_index, double>(crease_map_name).second;
+  if(input.creased)
+    add_creases(mesh, input.soup);
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
   input.diagonal = std::sqrt((box.xmax() - box.xmin()) * (box.xmax() - box.xmin()) +
                              (box.ymax() - box.ymin()) * (box.ymax() - box.ymin()) +

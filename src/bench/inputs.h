@@ -28,10 +28,15 @@ struct Input
   Soup soup; // the same mesh as arrays (vertex and face order of `mesh`)
   bool triangles = false;
   bool border = false;
-  double diagonal = 1; // of the bounding box, for relative differences
+  double diagonal = 1;  // of the bounding box, for relative differences
+  bool creased = false; // `mesh` has the map `crease_map_name`, `soup` its creases
 };
 
-/// the ids of the inputs made in code, then of the files, in table order
+/// the edge sharpness map of the creased inputs (OpenSubdiv's semantics)
+constexpr const char* crease_map_name = "e:sharpness";
+
+/// the ids of the inputs made in code, then of the files, then of the
+/// creased inputs, in table order
 std::vector<std::string> input_ids();
 
 /// makes the input `id` (`quick`: 10x smaller generated inputs); false with

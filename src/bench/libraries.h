@@ -21,7 +21,9 @@ struct Input;
 bool ours_has_threads();
 bool ours_with_tbb();
 /// `loop_subdivision`, ... into the input's Surface_mesh (a copy), with
-/// `threads(threads)` when the library has it; nullptr for threads > 1 if not
+/// `threads(threads)` when the library has it; nullptr for threads > 1 if not;
+/// a creased input refines with its creases (`edge_sharpness_map`, Loop and
+/// Catmull-Clark)
 Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threads = 1);
 /// the `Surface_mesh::resize` calls alone that a Loop or Catmull-Clark
 /// refinement in place makes (reserve, then resize to each level's counts)

@@ -75,6 +75,8 @@ const char* peer_names[] = {"ours", "CGAL", "OpenMesh", "OSD Far"};
 
 Job_ptr refinement(Peer peer, const Input& input, Scheme scheme, int levels)
 {
+  if(input.creased && (peer == cgal || peer == openmesh)) // they have no creases
+    return nullptr;
   switch(peer) {
     case ours:
       return ours_refinement(input, scheme, levels);
@@ -348,6 +350,61 @@ void refinement_section(const Options& options)
       "Subdiv has no multi-threaded refinement (" +
       std::string(ours_has_threads() ? "compiled without TBB" : "no `threads` named parameter") + ").\n");
     missed.push_back("full refinement >= 3x OSD with 2 threads: no 2-thread path in this build of CGAL Subdiv");
+  }
+}
+
+// --- with creases (issue 11) ------------------------------------------------------
+
+const std::vector<Case> crease_plan = {
+  {Scheme::loop, "fandisk-creased", {1, 2, 3}},
+  {Scheme::catmull_clark, "fandisk-creased", {1, 2}},
+  {Scheme::catmull_clark, "rook-creased", {1, 2}},
+};
+
+void creased_refinement_section(const Options& options)
+{
+  out(
+    "\n## Refinement with creases\n\n"
+    "Seconds, minimum of " +
+    std::to_string(options.runs) +
+    " runs after a warm-up. Ours: `loop_subdivision` / `catmull_clark_subdivision` with "
+    "`edge_sharpness_map` on a copy of the input `Surface_mesh` (the map refines with the mesh: the children's "
+    "sharpness is written back); OSD Far as above, with the same creases as `TopologyDescriptor` crease "
+    "pairs and weights. CGAL and OpenMesh have no creases. `fandisk-creased`: infinitely sharp creases from "
+    "`mark_sharp_edges` (30 degrees); `rook-creased`: semi-sharp creases of OpenSubdiv's own shape, refined "
+    "first. `points`: the largest distance to OSD's nearest point over the bounding-box diagonal. Target "
+    "(issue 11): at least as fast as OSD Far.\n\n"
+    "| scheme | input | levels | output faces | creases | ours | ours 2T | OSD Far | OSD/ours | OSD/ours 2T | "
+    "points vs OSD | target 1x OSD |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  for(const Case& c : crease_plan) {
+    const Input* in = input(c.input);
+    if(in == nullptr)
+      continue;
+    for(const int levels : c.levels) {
+      const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
+      const Job_ptr& mine = r.jobs[ours];
+      const Job_ptr& theirs = r.jobs[osd];
+      std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
+                        std::to_string(mine->output_faces()) + " | " +
+                        std::to_string(in->soup.crease_sharpness.size()) + " | " + seconds(r.t[ours]) + " | " +
+                        (r.ours2 ? seconds(r.two()) : "-") + " | ";
+      if(!theirs) {
+        out(row + "- | - | - | - | |\n");
+        continue;
+      }
+      const double speedup = r.t[osd] / r.t[ours], speedup2 = r.ours2 ? r.t[osd] / r.two() : nan_value;
+      const std::vector<P3> ours_points = mine->output_points(), osd_points = theirs->output_points();
+      const Agreement agreement = compare_points(ours_points, osd_points, in->diagonal);
+      std::string points = describe(agreement, ours_points.size(), osd_points.size());
+      if(!agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12)
+        points = "**" + points + " DIFFER**";
+      if(r.ours2 && r.ours2->output_points() != ours_points) // two threads: the same bits
+        points += " **(ours 2T differs from ours 1T)**";
+      const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
+      row += seconds(r.t[osd]) + " | " + fixed(speedup) + " | " + fixed(speedup2) + " | " + points + " | " +
+             check(speedup >= 1, "creased refinement >= 1x OSD, " + where, fixed(speedup) + "x") + " |";
+      out(row + "\n");
+    }
   }
 }
 
@@ -848,7 +905,7 @@ int main(int argc, char** argv)
         "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the "
         "floor); SCHEME: Loop, "
         "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
-        "quad200k, mixed, border, fandisk, mushroom, spot.\n",
+        "quad200k, mixed, border, fandisk, mushroom, spot, fandisk-creased, rook-creased.\n",
         SUBDIV_BENCH_MESH_DIR);
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
@@ -922,6 +979,7 @@ int main(int argc, char** argv)
 
   fresh_memory_section(options); // ends with set_heap(options.heap)
   refinement_section(options);
+  creased_refinement_section(options);
   stencil_build_section(options);
   apply_section(options);
   if(options.memory)

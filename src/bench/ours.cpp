@@ -198,6 +198,17 @@ Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threa
   if(threads > 1 && !has_threads)
     return nullptr;
   const auto np = ours_parameters(levels, threads);
+  if(input.creased) { // with the input's creases, which refine with the mesh (the copy's map)
+    const auto creases = [](Mesh& m) { return m.property_map<Mesh::Edge_index, double>(crease_map_name).first; };
+    if(scheme == Scheme::loop)
+      return mesh_job(input.mesh,
+                      [np, creases](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np.edge_sharpness_map(creases(m))); });
+    if(scheme == Scheme::catmull_clark)
+      return mesh_job(input.mesh, [np, creases](Mesh& m) {
+        CGAL::Subdiv::catmull_clark_subdivision(m, np.edge_sharpness_map(creases(m)));
+      });
+    return nullptr;
+  }
   switch(scheme) {
     case Scheme::loop:
       return mesh_job(input.mesh, [np](Mesh& m) { CGAL::Subdiv::loop_subdivision(m, np); });

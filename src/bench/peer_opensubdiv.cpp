@@ -84,6 +84,9 @@ public:
     m_descriptor.numFaces = static_cast<int>(soup.face_sizes.size());
     m_descriptor.numVertsPerFace = soup.face_sizes.data();
     m_descriptor.vertIndicesPerFace = soup.indices.data();
+    m_descriptor.numCreases = static_cast<int>(soup.crease_sharpness.size());
+    m_descriptor.creaseVertexIndexPairs = soup.crease_pairs.data();
+    m_descriptor.creaseWeights = soup.crease_sharpness.data();
     Sdc::Options options;
     options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
     options.SetTriangleSubdivision(Sdc::Options::TRI_SUB_CATMARK);
