@@ -181,9 +181,12 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
                                                                                  : Sd::Triangle_subdivision::catmark));
   else if(scheme == Scheme::loop)
     Sd::loop_subdivision(mesh, np);
-  else
-    Sd::linear_quad_subdivision(mesh,
-                                Sd::parameters::face_hole_map(holes).isolated_vertices(Sd::Isolated_vertices::keep));
+  else // bilinear: the tags move no point, they are carried (as the holes)
+    Sd::linear_quad_subdivision(mesh, Sd::parameters::edge_sharpness_map(edges)
+                                        .vertex_sharpness_map(vertices)
+                                        .crease_method(shape.method)
+                                        .face_hole_map(holes)
+                                        .isolated_vertices(Sd::Isolated_vertices::keep));
 }
 
 /// the centroids of the faces of `mesh` that are holes
@@ -639,6 +642,35 @@ TEST(SharpFeatures, split_non_manifold_edge_and_its_corners)
   EXPECT_EQ(copies_of_ends, 6u); // 0 and 1 on each of the three sheets
   for(auto e : edges(mesh))
     EXPECT_EQ(creases[e], 0.0) << e; // the edge 0-1 is a border of each sheet: sharp without a tag
+}
+
+// Bilinear with creases, as OpenSubdiv's bilinear scheme refines them: no
+// point moves (the same points as without tags, bit for bit), and the maps
+// hold the children's sharpness, decayed as Catmull-Clark decays it on the
+// same split.
+TEST(SharpFeatures, linear_carries_the_tags_and_moves_no_point)
+{
+  const Tagged_shape shape = read_shape("catmark_cube_creases1"); // 11 creases of 5, one of 0.1
+  Mesh tagged = tagged_mesh(shape), plain = tagged_mesh(shape), catmark = tagged_mesh(shape);
+  const auto two_levels_with_tags = [](Mesh& m) {
+    return Sd::parameters::number_of_iterations(2)
+      .edge_sharpness_map(m.property_map<Mesh::Edge_index, double>("e:sharpness").first)
+      .vertex_sharpness_map(m.property_map<Mesh::Vertex_index, double>("v:sharpness").first);
+  };
+  Sd::linear_quad_subdivision(tagged, two_levels_with_tags(tagged));
+  Sd::linear_quad_subdivision(plain, Sd::parameters::number_of_iterations(2));
+  Sd::catmull_clark_subdivision(catmark, two_levels_with_tags(catmark));
+  ASSERT_EQ(num_vertices(tagged), num_vertices(plain));
+  for(auto v : vertices(tagged))
+    ASSERT_EQ(tagged.point(v), plain.point(v)) << v;
+  const auto ours = tagged.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+  const auto theirs = catmark.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+  std::size_t of_three = 0;
+  for(auto e : edges(tagged)) {
+    ASSERT_EQ(ours[e], theirs[e]) << e;
+    of_three += ours[e] == 3.0 ? 1 : 0;
+  }
+  EXPECT_EQ(of_three, 44u); // the 11 creases of 5, in 4 quarters of 3
 }
 
 // OpenSubdiv's TRI_SUB_SMOOTH in rationals, on a tetrahedron (all triangles):

@@ -8,6 +8,8 @@
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <type_traits>
+
 namespace cgal_subdiv {
 namespace {
 
@@ -42,7 +44,9 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   using Host = SD::Host_of<Mask>;
   Surface_scheme scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face(),
                         {}};
-  if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
+  // (the linear masks take tags in the library, where they move no point;
+  // the command line has no way to pass them to `linear` yet)
+  if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value && std::is_constructible_v<Mask, SD::Border_corners>)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
       const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;

@@ -45,6 +45,12 @@ public:
   std::string name() const { return "linear triangle"; }
   bool is_interpolating() const { return true; }
 
+  /// sharpness tags move no point of a linear scheme: the mask of a tagged
+  /// level is this one, and `subdivide()` only carries the children's
+  /// sharpness (and the holes) from level to level, as OpenSubdiv's bilinear
+  /// scheme does
+  const Linear_triangle_mask& with_sharp_level(const void* /* level */) const { return *this; }
+
   template <class Accumulator>
   void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
