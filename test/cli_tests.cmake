@@ -355,6 +355,14 @@ subdiv_cli_test(surface_sharp_options ARGS surface ${SUBDIV_TEST_DATA_DIR}/opens
 subdiv_surface_error(surface_bad_boundary_option 2 "--boundary is none, edges or edges-and-corners, not 'sharp'"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube.obj ${mesh_out} --scheme catmull-clark --levels 1
   --boundary sharp)
+# linear carries the tags (and moves no point for them, which
+# SharpFeatures.linear_carries_the_tags_and_moves_no_point checks): the cube's
+# 12 creases (11 of 5, one of 0.1) come out as 22 halves of 4
+subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj
+  -o @WORK@/out.obj --scheme linear --levels 1 --boundary edges-and-corners
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
 subdiv_surface_error(surface_tags_with_limit 1 "creases, corners, holes and boundary modes \\('[^']*catmark_cube_creases1.obj' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles\\): --limit and --displace do not take them yet"

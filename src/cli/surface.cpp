@@ -293,7 +293,7 @@ Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, in
     throw Input_error(
       "--scheme " + scheme.name +
       " does not take OpenSubdiv's crease, corner and boundary tags yet, nor --sharp-angle and the boundary "
-      "options (loop, loop-warren and catmull-clark do)");
+      "options (loop, loop-warren, catmull-clark and linear do)");
   const auto run = [&](int n) {
     if(tags != nullptr)
       scheme.run_sharp(mesh, n, max_memory, *tags);

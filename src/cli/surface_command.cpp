@@ -82,7 +82,8 @@ writing not included).
                         t interpolateboundary (RenderMan's numbers: 0 none,
                         1 edges and corners, 2 edges only), t creasemethod
                         (normal or chaikin) and t smoothtriangles (catmark or
-                        smooth), for loop, loop-warren and catmull-clark; an
+                        smooth), for loop, loop-warren, catmull-clark and
+                        linear (where they move no point); an
                         OBJ OUTPUT gets the children's tags (holes included),
                         OFF, PLY and STL leave the holes out. Other tags are
                         ignored, with a note.
@@ -125,7 +126,7 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
                         (default uniform, or INPUT's tag)
   --smooth-triangles    catmull-clark: OpenSubdiv's TRI_SUB_SMOOTH edge rule
                         next to triangles (or INPUT's tag)
-  --sharp-angle DEGREES loop, loop-warren, catmull-clark: every edge whose two
+  --sharp-angle DEGREES loop, loop-warren, catmull-clark, linear: every edge whose two
                         faces' normals make more than DEGREES (0 to 180) becomes
                         infinitely sharp (CGAL's detect_sharp_edges), with the
                         creases of INPUT

@@ -44,9 +44,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   using Host = SD::Host_of<Mask>;
   Surface_scheme scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face(),
                         {}};
-  // (the linear masks take tags in the library, where they move no point;
-  // the command line has no way to pass them to `linear` yet)
-  if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value && std::is_constructible_v<Mask, SD::Border_corners>)
+  if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
       const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
@@ -56,13 +54,26 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         .edge_sharpness_map(edges)
                         .vertex_sharpness_map(vertices)
                         .crease_method(options.method)
-                        .face_hole_map(holes)
-                        .boundary_interpolation(options.boundary);
-      const SD::Border_corners corners = SD::internal::border_corners_for(options.boundary);
-      if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
-        SD::subdivide(mesh, Mask(corners, options.triangles), np.triangle_subdivision(options.triangles));
-      else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
-        SD::subdivide(mesh, Mask(corners), np);
+                        .face_hole_map(holes);
+      if constexpr(std::is_constructible_v<Mask, SD::Border_corners>) {
+        const SD::Border_corners corners = SD::internal::border_corners_for(options.boundary);
+        if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
+          SD::subdivide(mesh, Mask(corners, options.triangles),
+                        np.boundary_interpolation(options.boundary).triangle_subdivision(options.triangles));
+        else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
+          SD::subdivide(mesh, Mask(corners), np.boundary_interpolation(options.boundary));
+      } else {
+        // `linear` (the row of the quad mask, whose call picks the split):
+        // the tags move no point, they are carried; no boundary mode moves
+        // a point either (edges and corners is taken as edges, none still
+        // makes the border faces holes)
+        static_assert(std::is_same_v<Mask, SD::Linear_quad_mask<Surface>>,
+                      "the masks that take tags without a Border_corners are the linear ones");
+        using Boundary = SD::Boundary_interpolation;
+        const Boundary boundary =
+          options.boundary == Boundary::edges_and_corners ? Boundary::edges_only : options.boundary;
+        SD::linear_subdivision(mesh, np.boundary_interpolation(boundary));
+      }
     };
   return scheme;
 }
