@@ -90,6 +90,14 @@ std::array<double, 3> apply_difference_row(const Stencil<std::uint32_t, FT>& row
 struct No_heights
 {};
 
+/// whether the mask has sharp rules with a crease curve (Loop, Catmull-Clark)
+template <class Mask, class = void>
+struct Has_crease_curve : std::false_type
+{};
+template <class Mask>
+struct Has_crease_curve<Mask, std::void_t<decltype(std::declval<const Mask&>().crease_curve())>> : std::true_type
+{};
+
 // what the evaluation finds at one vertex
 template <class Point>
 struct Vertex_limit
@@ -214,7 +222,12 @@ public:
   /*!
    * moves every vertex of `mesh` to its limit position. np:
    * `vertex_point_map`; `vertex_normal_map` (optional): also writes the limit
-   * normals (see `limit_normals()`), computed before the points move.
+   * normals (see `limit_normals()`), computed before the points move;
+   * `edge_sharpness_map`, `vertex_sharpness_map` (Loop, Catmull-Clark, the
+   * linear masks): the sharpness tags of the mesh's level, as OpenSubdiv's
+   * `PrimvarRefiner::Limit` takes them (a corner stays, a crease goes to the
+   * limit of the curve rule along its two sharp edges, other vertices as
+   * without tags; semi-sharp counts as sharp; see doc/sharp_features.md).
    * Interpolating schemes leave the points where they are.
    */
   template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
@@ -225,7 +238,7 @@ public:
     using parameters::is_default_parameter;
     const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh));
-    const Evaluation<PolygonMesh, decltype(vpm)> e(*this, mesh, vpm, "project_to_limit");
+    const Evaluation<PolygonMesh, decltype(vpm)> e(*this, mesh, vpm, "project_to_limit", np);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
       e.write_normals(get_parameter(np, internal_np::vertex_normal_map));
     e.write_limit_points();
@@ -243,7 +256,9 @@ public:
    * positions; if that vanishes too (relative to the sum of the face areas,
    * 1e-12), the same with the control points; if that vanishes, the null
    * vector. Never NaN. The normals are computed in double and converted to the
-   * kernel's FT.
+   * kernel's FT. With sharpness tags (`edge_sharpness_map`,
+   * `vertex_sharpness_map`, as in `project_to_limit()`), corners and creases
+   * take the face normals (they have no tangent rows yet).
    */
   template <class PolygonMesh, class NormalMap, class NamedParameters = parameters::Default_named_parameters>
   void limit_normals(const PolygonMesh& mesh, NormalMap normals,
@@ -253,7 +268,7 @@ public:
     using parameters::get_parameter;
     const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, mesh));
-    const Evaluation<PolygonMesh, decltype(vpm)> e(*this, mesh, vpm, "limit_normals");
+    const Evaluation<PolygonMesh, decltype(vpm)> e(*this, mesh, vpm, "limit_normals", np);
     e.write_normals(normals);
   }
 
@@ -324,6 +339,36 @@ public:
 
 private:
   /*
+   * The sharpness tags of `np` (`edge_sharpness_map`, `vertex_sharpness_map`),
+   * if any, at the mesh's level (`internal::apply_sharp_limits`): checked as
+   * `subdivide()` checks them, then the corners and creases get their limit
+   * rows. The linear masks take tags and move no point for them: nothing to do.
+   */
+  template <class FT, class PolygonMesh, class NamedParameters>
+  void sharpen(internal::Limit_rows<FT>& rows, const PolygonMesh& mesh, const NamedParameters& np,
+               const std::string& caller) const
+  {
+    using parameters::is_default_parameter;
+    if constexpr(!is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
+                 !is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value) {
+      const auto m = mask<PolygonMesh, FT>();
+      using M = std::decay_t<decltype(m)>;
+      static_assert(internal::Takes_sharpness_tags<M>::value,
+                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
+      if constexpr(internal::Has_crease_curve<M>::value) {
+        internal::check_sharpness_tags<FT>(mesh, np, caller + " (" + m.name() + ")");
+        const auto readers = internal::sharpness_readers<PolygonMesh>(np);
+        // the rules of this level do not depend on how sharpness decays
+        const internal::Sharp_level<PolygonMesh, FT> level(mesh, readers.first, readers.second, Crease_method::uniform,
+                                                           internal::border_corners_of(m));
+        internal::apply_sharp_limits(rows, mesh, level, m.crease_curve());
+      }
+    } else {
+      (void)rows, (void)mesh, (void)np, (void)caller;
+    }
+  }
+
+  /*
    * One evaluation of a mesh: its limit rows and what they give, by vertex
    * order: the limit points and the tangent vectors (double).
    */
@@ -340,9 +385,12 @@ private:
     std::vector<Point> limits;
     std::vector<std::array<std::array<double, 3>, 2>> tangents;
 
-    Evaluation(const Limit_evaluator& evaluator, const PolygonMesh& m, const VPM& map, const std::string& caller)
+    template <class NamedParameters = parameters::Default_named_parameters>
+    Evaluation(const Limit_evaluator& evaluator, const PolygonMesh& m, const VPM& map, const std::string& caller,
+               const NamedParameters& np = parameters::default_values())
       : mesh(m), vpm(map), rows(evaluator.template rows<FT>(m, map, caller))
     {
+      evaluator.sharpen(rows, m, np, caller);
       for(auto v : vertices(mesh))
         control.push_back(get(vpm, v));
       const auto point_of = [&](std::size_t i) -> const Point& { return control[i]; };

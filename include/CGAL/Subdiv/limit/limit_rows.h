@@ -21,13 +21,16 @@
 
 #include <CGAL/Subdiv/analysis/Limit_masks.h>
 #include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
+#include <CGAL/Subdiv/analysis/curve_local_matrix.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Row_builder.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
+#include <CGAL/Subdiv/views/Sharp_level.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
 #include <cstddef>
@@ -182,6 +185,68 @@ Limit_rows<typename Mask::Number_type> limit_rows(const Masks& masks, const Mask
     rows.has_tangents[pending[p]] = finer_rows.has_tangents[p];
   }
   return rows;
+}
+
+// the curve rule of the creases as a curve scheme (its two masks), for the curve analysis
+template <class FT>
+struct Crease_curve_scheme
+{
+  using Number_type = FT;
+  const Border_curve_rule<FT>& rule;
+  std::string name() const { return "the crease rule"; }
+  template <class Accumulator>
+  void even_mask(Accumulator& acc) const
+  {
+    for(const auto& term : rule.even())
+      acc.add(term.first, term.second);
+  }
+  template <class Accumulator>
+  void odd_mask(Accumulator& acc) const
+  {
+    for(const auto& term : rule.odd())
+      acc.add(term.first, term.second);
+  }
+};
+
+/*
+ * The limit rows under the sharpness tags of the mesh's level (`level`), as
+ * OpenSubdiv's `PrimvarRefiner::Limit` takes them, by the rule of each
+ * vertex on this level: a corner's limit is the vertex itself; a crease's is
+ * the limit of the curve rule along its two sharp edges (the left fixed
+ * vector of the curve's local matrix, over the two crease neighbours and the
+ * vertex: the cubic B-spline's 1/6, 2/3, 1/6); neither has tangent rows (the
+ * normal there is the faces'). Smooth vertices and darts keep the rows of
+ * the analysis: the children of a smooth vertex's ring follow smooth rules
+ * only, whatever the tags around it; a dart gets the smooth masks, as in
+ * OpenSubdiv.
+ */
+template <class FT, class Mesh>
+void apply_sharp_limits(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_level<Mesh, FT>& level,
+                        const Border_curve_rule<FT>& curve)
+{
+  const Crease_curve_scheme<FT> scheme{curve};
+  const std::pair<int, int> window = invariant_window(scheme);
+  const std::vector<FT> crease = normalised_left_fixed_vector(local_subdivision_matrix(scheme));
+  CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
+  (void)window;
+  const Mesh_numbering<Mesh> number(mesh);
+  for(std::size_t k = 0; k < rows.position.size(); ++k) {
+    const Vertex_view<Mesh> v = level.vertex_view(number.vertex(k));
+    if(v.rule() != Vertex_rule::corner && v.rule() != Vertex_rule::crease)
+      continue;
+    Stencil<std::uint32_t, FT> position;
+    if(v.rule() == Vertex_rule::corner) {
+      position.add(static_cast<std::uint32_t>(k), FT(1));
+    } else {
+      position.add(static_cast<std::uint32_t>(number(target(v.crease_out(0), mesh))), crease[0]);
+      position.add(static_cast<std::uint32_t>(k), crease[1]);
+      position.add(static_cast<std::uint32_t>(number(target(v.crease_out(1), mesh))), crease[2]);
+    }
+    rows.position[k] = std::move(position);
+    rows.tangent[0][k] = Stencil<std::uint32_t, FT>();
+    rows.tangent[1][k] = Stencil<std::uint32_t, FT>();
+    rows.has_tangents[k] = 0;
+  }
 }
 
 /*

@@ -194,6 +194,8 @@ public:
 
   /// the sharpness tags of the level being refined (tagged masks only)
   const internal::Sharp_level<Mesh, FT>* sharp_level() const { return m_sharp.level(); }
+  /// the curve rule of the creases (and of the border)
+  const Border_curve_rule<FT>& crease_curve() const { return m_sharp.curve(); }
 
   /// the same rules with the sharpness tags of a level (a tagged mask)
   auto with_sharp_level(const internal::Sharp_level<Mesh, FT>* level) const
