@@ -253,6 +253,10 @@ struct Copy_recorder : CGAL::Polygon_mesh_processing::Default_orientation_visito
  * between its two crease edges: the crease rule). The refined points are
  * then OpenSubdiv's, with as many copies of a point as the vertex has.
  *
+ * A polygon that passes twice through a point in a row (a zero-length edge,
+ * which OpenSubdiv takes as a non-manifold edge) is kept: each pass is a
+ * copy of the point, as if the edge had a length, and each copy is a corner.
+ *
  * \tparam PointRange a random-access range of points (`std::vector<Point_3>`),
  *         convertible to the points of `mesh`
  * \tparam PolygonRange a random-access range of polygons, each a range of
@@ -265,10 +269,6 @@ struct Copy_recorder : CGAL::Polygon_mesh_processing::Default_orientation_visito
  *        `mesh` (valid for the elements added to it, as `Surface_mesh`'s
  *        are), where the sharpness above is written (the larger of it and
  *        the value there); without them only the split is done
- * A polygon that passes twice through a point in a row (a zero-length edge,
- * which OpenSubdiv takes as a non-manifold edge) is kept: each pass is a
- * copy of the point, as if the edge had a length, and each copy is a corner.
- *
  * \returns the vertices made, the point each copies, and the counts
  * \throws Bad_input naming the polygon when one has fewer than three
  *         corners, names a point out of range, or passes twice through a
