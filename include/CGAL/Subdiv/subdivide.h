@@ -12,7 +12,7 @@
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/Inherited_face_map.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
-#include <CGAL/Subdiv/views/Sharp_level.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -24,88 +24,6 @@ namespace CGAL {
 namespace Subdiv {
 
 namespace internal {
-
-/// the sharpness that the map of `np` under `MapTag` (`edge_sharpness_map_t`,
-/// `vertex_sharpness_map_t`) gives `key` (0 without such a map)
-template <class MapTag, class NamedParameters, class Key>
-auto tagged_sharpness(const NamedParameters& np, Key key)
-{
-  if constexpr(!parameters::is_default_parameter<NamedParameters, MapTag>::value)
-    return get(parameters::get_parameter(np, MapTag()), key);
-  else {
-    (void)np, (void)key;
-    return 0;
-  }
-}
-
-/// the sharpness of an edge and of a vertex in the maps of `np` (two
-/// callables; 0 without a map)
-template <class PolygonMesh, class NamedParameters>
-auto sharpness_readers(const NamedParameters& np)
-{
-  using GT = boost::graph_traits<PolygonMesh>;
-  return std::make_pair(
-    [&np](typename GT::edge_descriptor e) { return tagged_sharpness<edge_sharpness_map_t>(np, e); },
-    [&np](typename GT::vertex_descriptor v) { return tagged_sharpness<vertex_sharpness_map_t>(np, v); });
-}
-
-/// the tags of `np` checked by `Sharp_level::check_tags` (a negative or NaN
-/// sharpness is refused), before the mesh or a map is changed
-template <class FT, class PolygonMesh, class NamedParameters>
-void check_sharpness_tags(const PolygonMesh& mesh, const NamedParameters& np, const std::string& scheme)
-{
-  const auto readers = sharpness_readers<PolygonMesh>(np);
-  Sharp_level<PolygonMesh, FT>::check_tags(mesh, readers.first, readers.second, scheme);
-}
-
-/*
- * One level of `subdivide()` with sharpness tags: the tags of the level are
- * read from the maps of `np`, the mask refines with them, and the children's
- * sharpness is written back into the maps.
- */
-template <class PolygonMesh, class Mask, class NamedParameters, class RefineOne>
-void refine_with_sharpness(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np, const RefineOne& refine_one)
-{
-  static_assert(Takes_sharpness_tags<Mask>::value,
-                "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
-  using parameters::get_parameter;
-  using FT = typename Mask::Number_type;
-  const Crease_method method =
-    parameters::choose_parameter(get_parameter(np, crease_method_t()), Crease_method::uniform);
-  const auto edges = get_parameter(np, edge_sharpness_map_t());
-  const auto vertices = get_parameter(np, vertex_sharpness_map_t());
-  const auto readers = sharpness_readers<PolygonMesh>(np);
-  const Sharp_level<PolygonMesh, FT> tags(mesh, readers.first, readers.second, method, border_corners_of(mask));
-  using Edges = std::remove_const_t<decltype(edges)>;
-  using Vertices = std::remove_const_t<decltype(vertices)>;
-  Sharpness_writer<PolygonMesh, FT, Edges, Vertices> writer(mesh, tags, &edges, &vertices);
-  refine_one(mask.with_sharp_level(&tags), writer);
-}
-
-/*
- * The named parameters `boundary_interpolation` and `triangle_subdivision`
- * name options of the mask (`loop_subdivision()` and the like make the mask
- * from them): a call to `subdivide()` whose mask has other options is refused.
- */
-template <class Mask, class NamedParameters>
-void check_mask_options(const Mask& mask, const NamedParameters& np)
-{
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  if constexpr(!is_default_parameter<NamedParameters, boundary_interpolation_t>::value) {
-    const Boundary_interpolation boundary = get_parameter(np, boundary_interpolation_t());
-    require(border_corners_for(boundary) == border_corners_of(mask),
-            mask.name() +
-              ": boundary_interpolation(edges_and_corners) needs the mask's Border_corners::sharp, and "
-              "the other modes Border_corners::smooth (the argument of the constructors of Loop_mask "
-              "and Catmull_clark_mask; the other schemes have smooth corners only)");
-  }
-  if constexpr(!is_default_parameter<NamedParameters, triangle_subdivision_t>::value)
-    require(get_parameter(np, triangle_subdivision_t()) == triangle_subdivision_of(mask),
-            mask.name() +
-              ": triangle_subdivision(smooth) is an option of Catmull_clark_mask, which was made "
-              "with another (pass it to the constructor, or call catmull_clark_subdivision())");
-}
 
 /*
  * Under `Boundary_interpolation::none` the faces at the border have no limit
@@ -213,10 +131,8 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
                                                     : internal::Isolated_check::allow;
   internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated_check);
-  constexpr bool tagged = !parameters::is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
-                          !parameters::is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value;
-  if constexpr(tagged)
-    internal::check_sharpness_tags<typename Mask::Number_type>(mesh, np, mask.name());
+  const auto tags = internal::sharpness_tags_of<PolygonMesh, typename Mask::Number_type>(np);
+  tags.check(mesh, mask.name());
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
@@ -262,12 +178,8 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     if(levels > 0 && choose_parameter(get_parameter(np, internal::boundary_interpolation_t()),
                                       Boundary_interpolation::edges_only) == Boundary_interpolation::none)
       internal::make_border_faces_holes(mesh, get_parameter(np, internal::face_hole_map_t()), np);
-  for(int level = 0; level < levels; ++level) {
-    if constexpr(tagged)
-      internal::refine_with_sharpness(mesh, mask, np, refine_one_with_holes);
-    else
-      refine_one_with_holes(mask);
-  }
+  for(int level = 0; level < levels; ++level)
+    tags.refine(mesh, mask, refine_one_with_holes);
   if constexpr(may_set_aside)
     if(isolated == Isolated_vertices::keep)
       internal::add_isolated_vertices(mesh, vpm, set_aside);

@@ -18,6 +18,7 @@
 #include <CGAL/Subdiv/limit/limit_rows.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/subdivide.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -170,11 +171,24 @@ public:
 
   /*!
    * the limit rows of every vertex of `mesh` (in the order of
-   * `vertices(mesh)`), over the vertices of `mesh` by ordinal, in `FT`.
-   * Checks the mesh as `subdivide()` does. \throws Bad_input
+   * `vertices(mesh)`), over the vertices of `mesh` by ordinal, in `FT`,
+   * with the sharpness tags `tags` of the mesh's level
+   * (`internal::sharpness_tags_of`; by default none). Checks the mesh and the
+   * tags as `subdivide()` does. \throws Bad_input
    */
+  template <class FT, class PolygonMesh, class VertexPointMap, class Tags = internal::No_sharpness_tags>
+  internal::Limit_rows<FT> rows(const PolygonMesh& mesh, const VertexPointMap& vpm, const std::string& caller,
+                                const Tags& tags = Tags()) const
+  {
+    internal::Limit_rows<FT> result = unsharpened_rows<FT>(mesh, vpm, caller);
+    sharpen(result, mesh, tags, caller);
+    return result;
+  }
+
+private:
   template <class FT, class PolygonMesh, class VertexPointMap>
-  internal::Limit_rows<FT> rows(const PolygonMesh& mesh, const VertexPointMap& vpm, const std::string& caller) const
+  internal::Limit_rows<FT> unsharpened_rows(const PolygonMesh& mesh, const VertexPointMap& vpm,
+                                            const std::string& caller) const
   {
     const auto m = mask<PolygonMesh, FT>();
     using Host = Host_of<std::decay_t<decltype(m)>>;
@@ -191,6 +205,7 @@ public:
     }
   }
 
+public:
   /*!
    * the limit point, the two tangent vectors (double) and the limit of
    * `heights` (a vertex property map of scalars, optional) of every vertex of
@@ -339,32 +354,27 @@ public:
 
 private:
   /*
-   * The sharpness tags of `np` (`edge_sharpness_map`, `vertex_sharpness_map`),
-   * if any, at the mesh's level (`internal::apply_sharp_limits`): checked as
-   * `subdivide()` checks them, then the corners and creases get their limit
-   * rows. The linear masks take tags and move no point for them: nothing to do.
+   * The sharpness tags `tags` (`internal::sharpness_tags_of`), if any, at the
+   * mesh's level (`internal::apply_sharp_limits`): checked as `subdivide()`
+   * checks them, then the corners and creases get their limit rows. The
+   * linear masks take tags and move no point for them: nothing to do.
    */
-  template <class FT, class PolygonMesh, class NamedParameters>
-  void sharpen(internal::Limit_rows<FT>& rows, const PolygonMesh& mesh, const NamedParameters& np,
+  template <class FT, class PolygonMesh, class Tags>
+  void sharpen(internal::Limit_rows<FT>& rows, const PolygonMesh& mesh, const Tags& tags,
                const std::string& caller) const
   {
-    using parameters::is_default_parameter;
-    if constexpr(!is_default_parameter<NamedParameters, internal::edge_sharpness_map_t>::value ||
-                 !is_default_parameter<NamedParameters, internal::vertex_sharpness_map_t>::value) {
+    if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
       const auto m = mask<PolygonMesh, FT>();
       using M = std::decay_t<decltype(m)>;
       static_assert(internal::Takes_sharpness_tags<M>::value,
                     "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
       if constexpr(internal::Has_crease_curve<M>::value) {
-        internal::check_sharpness_tags<FT>(mesh, np, caller + " (" + m.name() + ")");
-        const auto readers = internal::sharpness_readers<PolygonMesh>(np);
+        tags.check(mesh, caller + " (" + m.name() + ")");
         // the rules of this level do not depend on how sharpness decays
-        const internal::Sharp_level<PolygonMesh, FT> level(mesh, readers.first, readers.second, Crease_method::uniform,
-                                                           internal::border_corners_of(m));
-        internal::apply_sharp_limits(rows, mesh, level, m.crease_curve());
+        internal::apply_sharp_limits(rows, mesh, tags.level(mesh, internal::border_corners_of(m)), m.crease_curve());
       }
     } else {
-      (void)rows, (void)mesh, (void)np, (void)caller;
+      (void)rows, (void)mesh, (void)tags, (void)caller;
     }
   }
 
@@ -388,9 +398,9 @@ private:
     template <class NamedParameters = parameters::Default_named_parameters>
     Evaluation(const Limit_evaluator& evaluator, const PolygonMesh& m, const VPM& map, const std::string& caller,
                const NamedParameters& np = parameters::default_values())
-      : mesh(m), vpm(map), rows(evaluator.template rows<FT>(m, map, caller))
+      : mesh(m), vpm(map),
+        rows(evaluator.template rows<FT>(m, map, caller, internal::sharpness_tags_of<PolygonMesh, FT>(np)))
     {
-      evaluator.sharpen(rows, m, np, caller);
       for(auto v : vertices(mesh))
         control.push_back(get(vpm, v));
       const auto point_of = [&](std::size_t i) -> const Point& { return control[i]; };
