@@ -213,6 +213,36 @@ std::vector<testing_utils::Double_point> tagged_limit(const Mesh& mesh, Scheme s
   return testing_utils::double_points(copy);
 }
 
+/// the tags of the tagged `mesh` as named parameters (read only), with the shape's crease method
+auto tag_parameters(const Mesh& mesh, const Tagged_shape& shape)
+{
+  return Sd::parameters::edge_sharpness_map(mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first)
+    .vertex_sharpness_map(mesh.property_map<Mesh::Vertex_index, double>("v:sharpness").first)
+    .crease_method(shape.method);
+}
+
+/// `use(mask)` with the mask of the scheme and the shape's options
+template <class Use>
+void with_mask_of(Scheme scheme, const Tagged_shape& shape, const Use& use)
+{
+  if(scheme == Scheme::catmark)
+    use(Sd::Catmull_clark_mask<Mesh>(
+      shape.border, shape.smooth_triangles ? Sd::Triangle_subdivision::smooth : Sd::Triangle_subdivision::catmark));
+  else if(scheme == Scheme::loop)
+    use(Sd::Loop_mask<Mesh>(shape.border));
+  else
+    use(Sd::Linear_quad_mask<Mesh>());
+}
+
+/// `table` applied to the points of `mesh`
+std::vector<testing_utils::Double_point> applied(const Sd::Stencil_table<double>& table, const Mesh& mesh)
+{
+  const std::vector<Kernel::Point_3> coarse(mesh.points().begin(), mesh.points().end());
+  std::vector<Kernel::Point_3> result;
+  table.apply(coarse, result);
+  return result;
+}
+
 /// the centroids of the faces of `mesh` that are holes
 std::vector<testing_utils::Double_point> hole_centroids(const Mesh& mesh)
 {
@@ -433,6 +463,22 @@ TEST_P(OpenSubdivShapes, refine_as_opensubdiv_far_does)
     return std::count_if(m.vertices().begin(), m.vertices().end(), [&](auto v) { return m.is_isolated(v); });
   };
   EXPECT_EQ(isolated(mesh), std::count(in_a_face.begin(), in_a_face.end(), false)); // the split leaves none behind
+  if(isolated(mesh) == 0) // (the tables refuse isolated vertices) the same from the coarse points in one table
+    with_mask_of(c.scheme, shape, [&](const auto& mask) {
+      const auto np = tag_parameters(mesh, shape);
+      const auto at_3 = applied(Sd::make_stencil_table(mesh, mask, np.number_of_iterations(3)), mesh);
+      EXPECT_LT((std::max)(testing_utils::position_mismatch(at_3, reference[3].points),
+                           testing_utils::position_mismatch(reference[3].points, at_3)),
+                1e-12)
+        << "stencil table of 3 levels";
+      if(has_valence_2_vertex(c.shape))
+        return;
+      const auto limit = applied(Sd::make_limit_stencil_table(mesh, mask, np.number_of_iterations(2)), mesh);
+      EXPECT_LT((std::max)(testing_utils::position_mismatch(limit, limit_at_2),
+                           testing_utils::position_mismatch(limit_at_2, limit)),
+                1e-12)
+        << "limit stencil table after 2 levels";
+    });
   for(int level = 1; level <= 3; ++level) {
     refine_once(mesh, c.scheme, shape);
     const auto ours = testing_utils::double_points(mesh);
@@ -600,6 +646,85 @@ TEST(SharpFeatures, negative_sharpness_is_refused)
   EXPECT_NE(message.find("the sharpness of edge 3 is negative or NaN"), std::string::npos) << message;
   EXPECT_EQ(num_vertices(mesh), num_vertices(before));
   EXPECT_EQ(num_faces(mesh), num_faces(before));
+}
+
+// make_stencil_table() with tags is subdivide() with the same tags, exactly
+// in rationals, with either creasing method: a cube with semi-sharp edges
+// (sharpness 3/2, which crosses from one rule to another on the second
+// level) and a semi-sharp corner. The caller's maps are only read, and the
+// refined mesh is subdivide()'s.
+TEST(SharpFeatures, stencil_table_with_tags_is_subdivide_in_rationals)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  for(const Sd::Crease_method method : {Sd::Crease_method::uniform, Sd::Crease_method::chaikin}) {
+    const Exact_mesh coarse = [] {
+      Exact_mesh m = testing_utils::cube<Exact_mesh>();
+      auto edges = m.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+      auto corners = m.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+      for(auto e : m.edges())
+        if(e.idx() % 3 != 0)
+          edges[e] = FT(3) / FT(2);
+      corners[Exact_mesh::Vertex_index(2)] = FT(5) / FT(4);
+      return m;
+    }();
+    const auto edges = coarse.property_map<Exact_mesh::Edge_index, FT>("e:sharpness").first;
+    const auto corners = coarse.property_map<Exact_mesh::Vertex_index, FT>("v:sharpness").first;
+    const auto np = Sd::parameters::edge_sharpness_map(edges).vertex_sharpness_map(corners).crease_method(method);
+    Exact_mesh refined;
+    const Sd::Stencil_table<FT> table = Sd::make_stencil_table(coarse, Sd::Catmull_clark_mask<Exact_mesh, FT>(),
+                                                               np.number_of_iterations(2).refined_mesh(refined));
+    for(auto e : coarse.edges())
+      ASSERT_EQ(edges[e], e.idx() % 3 != 0 ? FT(3) / FT(2) : FT(0)) << "the caller's map changed, edge " << e;
+    ASSERT_EQ(corners[Exact_mesh::Vertex_index(2)], FT(5) / FT(4));
+
+    Exact_mesh by_levels = coarse;
+    Sd::catmull_clark_subdivision(
+      by_levels, Sd::parameters::number_of_iterations(2)
+                   .edge_sharpness_map(by_levels.property_map<Exact_mesh::Edge_index, FT>("e:sharpness").first)
+                   .vertex_sharpness_map(by_levels.property_map<Exact_mesh::Vertex_index, FT>("v:sharpness").first)
+                   .crease_method(method));
+    std::vector<EK::Point_3> from_table;
+    table.apply(std::vector<EK::Point_3>(coarse.points().begin(), coarse.points().end()), from_table);
+    ASSERT_EQ(from_table.size(), num_vertices(by_levels));
+    ASSERT_EQ(num_vertices(refined), num_vertices(by_levels));
+    std::size_t untagged_differences = 0;
+    Exact_mesh untagged = coarse;
+    Sd::catmull_clark_subdivision(untagged, Sd::parameters::number_of_iterations(2));
+    for(auto v : by_levels.vertices()) {
+      ASSERT_EQ(from_table[v.idx()], by_levels.point(v)) << "vertex " << v;
+      ASSERT_EQ(refined.point(v), by_levels.point(v)) << "vertex " << v;
+      untagged_differences += untagged.point(v) != by_levels.point(v) ? 1 : 0;
+    }
+    EXPECT_GT(untagged_differences, num_vertices(by_levels) / 2); // the tags moved most points
+  }
+}
+
+// make_stencil_table() and the limit tables check the tags as subdivide()
+// does, and the options against the mask.
+TEST(SharpFeatures, tables_refuse_what_subdivide_refuses)
+{
+  Mesh mesh = testing_utils::cube<Mesh>();
+  auto sharpness = mesh.add_property_map<Mesh::Edge_index, double>("e:sharpness", 0).first;
+  sharpness[Mesh::Edge_index(4)] = -0.5;
+  const auto np = Sd::parameters::edge_sharpness_map(sharpness);
+  std::string message =
+    testing_utils::bad_input_message([&] { Sd::make_stencil_table(mesh, Sd::Catmull_clark_mask<Mesh>(), np); });
+  EXPECT_NE(message.find("the sharpness of edge 4 is negative or NaN"), std::string::npos) << message;
+  for(int levels : {0, 2}) {
+    message = testing_utils::bad_input_message(
+      [&] { Sd::make_limit_stencil_table(mesh, Sd::Catmull_clark_mask<Mesh>(), np.number_of_iterations(levels)); });
+    EXPECT_NE(message.find("the sharpness of edge 4 is negative or NaN"), std::string::npos) << levels << message;
+  }
+  sharpness[Mesh::Edge_index(4)] = 0;
+  message = testing_utils::bad_input_message([&] {
+    Sd::make_stencil_table(mesh, Sd::Catmull_clark_mask<Mesh>(),
+                           np.boundary_interpolation(Sd::Boundary_interpolation::edges_and_corners));
+  });
+  EXPECT_NE(message.find("boundary_interpolation(edges_and_corners) needs the mask's Border_corners::sharp"),
+            std::string::npos)
+    << message;
 }
 
 // The tags are checked before anything is changed: under

@@ -49,7 +49,12 @@ struct Limit_stencil_tables
  * The rows are the limit rows of the refined mesh (`Limit_evaluator::rows()`)
  * composed with the stencils of `make_stencil_table()`. For a mesh with
  * double coordinates. np as `make_stencil_table()`: `number_of_iterations`,
- * `refined_mesh` (with the refined, not the limit, points), `threads`.
+ * `refined_mesh` (with the refined, not the limit, points), `threads`, the
+ * sharpness tags (`edge_sharpness_map`, `vertex_sharpness_map`,
+ * `crease_method`): the limit rows of the refined mesh then take the tags of
+ * its level, as `project_to_limit()` does (a corner stays, a crease goes to
+ * the limit of its curve rule, and neither has tangent rows yet: its
+ * `has_tangents` is false).
  * \throws Bad_input as `subdivide()` and `project_to_limit()` do.
  */
 template <class Mask, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
@@ -64,11 +69,21 @@ Limit_stencil_tables make_limit_stencil_tables(const PolygonMesh& mesh, const Li
   PolygonMesh* refined_mesh = choose_parameter<PolygonMesh*>(get_parameter(np, internal::refined_mesh_t()), nullptr);
   PolygonMesh refined;
   const auto vpm = get_const_property_map(CGAL::vertex_point, mesh);
+  internal::Sharpness_by_ordinal<double> refined_sharpness;
   const Stencil_table<double> table =
     internal::stencil_table_of(mesh, evaluator.template mask<PolygonMesh, double>(), vpm, levels, &refined,
-                               internal::parallel_loop(np), internal::max_memory_of(np));
-  const internal::Limit_rows<double> rows = evaluator.template rows<double>(
-    refined, get_const_property_map(CGAL::vertex_point, refined), "make_limit_stencil_tables");
+                               internal::parallel_loop(np), internal::max_memory_of(np), np, &refined_sharpness);
+  const auto limit_rows = [&](const auto& tags) {
+    return evaluator.template rows<double>(refined, get_const_property_map(CGAL::vertex_point, refined),
+                                           "make_limit_stencil_tables", tags);
+  };
+  const internal::Mesh_numbering<PolygonMesh> refined_number(refined);
+  const internal::Limit_rows<double> rows = [&] {
+    if constexpr(internal::has_sharpness_tags<NamedParameters>())
+      return limit_rows(internal::tags_by_ordinal(refined_number, refined_sharpness));
+    else
+      return limit_rows(internal::No_sharpness_tags());
+  }();
   const auto to_table = [&](const internal::Rows<double>& r) {
     Stencil_table<double> limit(num_vertices(refined));
     for(const auto& row : r)

@@ -11,6 +11,7 @@
 #include <CGAL/Subdiv/stencils/Row_builder.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Subdiv/stencils/Stencil_table.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -291,16 +292,66 @@ struct Composed_level
 
 namespace internal {
 
-// `make_stencil_table()` with its parameters read
-template <class PolygonMesh, class Mask, class VertexPointMap>
-Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& mesh, const Mask& mask,
-                                                           const VertexPointMap& vpm, int levels,
-                                                           PolygonMesh* refined_mesh, const Parallel_loop& loop,
-                                                           double max_memory)
+/// one level of `mask` on `mesh` with its `tags`, composed with `coarse`
+template <class FT, class PolygonMesh, class Mask, class Tags>
+Stencil_table<FT> compose_on_host(const PolygonMesh& mesh, const Mask& mask, const Tags& tags,
+                                  const Stencil_table<FT>* coarse, std::size_t sources, const Parallel_loop& loop)
+{
+  const Host_of<Mask> host(mesh);
+  return tags.on_level(mesh, mask, [&](const auto& level_mask) {
+    return internal::compose_level<FT>(host, level_mask, host.numbering(), coarse, sources, loop);
+  });
+}
+
+/*
+ * The table of `levels` levels of `mask` refined on `work` (a copy of the
+ * mesh, its vertices the `sources`), with the sharpness tags `tags` of the
+ * copy: the topology of the first `topology_levels` levels is refined on
+ * `work`, the last level, if it is not, is composed on its host.
+ */
+template <class PolygonMesh, class Mask, class Tags>
+Stencil_table<typename Mask::Number_type> refined_table(PolygonMesh& work, const Mask& mask, const Tags& tags,
+                                                        int levels, int topology_levels, std::size_t sources,
+                                                        const Parallel_loop& loop)
 {
   using FT = typename Mask::Number_type;
   using Host = Host_of<Mask>;
+  const auto work_vpm = get(CGAL::vertex_point, work);
+  internal::reserve_levels<Host>(work, topology_levels);
+  Stencil_table<FT> table = levels == 0 ? Stencil_table<FT>::identity(sources) : Stencil_table<FT>(sources);
+  for(int level = 0; level < levels; ++level) {
+    const Stencil_table<FT>* coarse = level == 0 ? nullptr : &table;
+    if(level < topology_levels) {
+      internal::Composed_level<FT> composed{coarse, sources};
+      tags.refine(work, mask, [&](const auto& level_mask, auto&... sinks) {
+        internal::refine_level(work, level_mask, internal::No_points<decltype(work_vpm)>{work_vpm}, loop, composed,
+                               sinks...);
+      });
+      table = std::move(composed.table);
+    } else
+      table = compose_on_host<FT>(work, mask, tags, coarse, sources, loop);
+  }
+  return table;
+}
+
+/*
+ * `make_stencil_table()` with its parameters read; `np` gives the sharpness
+ * tags, if any (`sharpness_tags_of`), which are only read: the levels refine
+ * copies of them, which `refined_sharpness` (if not null) receives, by
+ * ordinal of the refined mesh, when the refined mesh is made.
+ */
+template <class PolygonMesh, class Mask, class VertexPointMap, class NamedParameters>
+Stencil_table<typename Mask::Number_type> stencil_table_of(
+  const PolygonMesh& mesh, const Mask& mask, const VertexPointMap& vpm, int levels, PolygonMesh* refined_mesh,
+  const Parallel_loop& loop, double max_memory, const NamedParameters& np,
+  Sharpness_by_ordinal<typename Mask::Number_type>* refined_sharpness = nullptr)
+{
+  using FT = typename Mask::Number_type;
+  using Host = Host_of<Mask>;
+  internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
+  const auto tags = sharpness_tags_of<PolygonMesh, FT>(np);
+  tags.check(mesh, mask.name());
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, max_memory);
 
@@ -309,27 +360,21 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
     return Stencil_table<FT>::identity(sources);
 
   const int topology_levels = refined_mesh != nullptr ? levels : levels - 1;
-  if(topology_levels == 0 && levels == 1) { // the input's topology is all it needs: no copy
-    const Host host(mesh);
-    return internal::compose_level<FT>(host, mask, host.numbering(), nullptr, sources, loop);
-  }
+  if(topology_levels == 0 && levels == 1) // the input's topology is all it needs: no copy
+    return compose_on_host<FT>(mesh, mask, tags, nullptr, sources, loop);
   PolygonMesh work = mesh;
-  const auto work_vpm = get(CGAL::vertex_point, work);
-  internal::reserve_levels<Host>(work, topology_levels);
-  Stencil_table<FT> table = levels == 0 ? Stencil_table<FT>::identity(sources) : Stencil_table<FT>(sources);
-  for(int level = 0; level < levels; ++level) {
-    const Stencil_table<FT>* coarse = level == 0 ? nullptr : &table;
-    if(level < topology_levels) {
-      internal::Composed_level<FT> composed{coarse, sources};
-      internal::refine_level(work, mask, internal::No_points<decltype(work_vpm)>{work_vpm}, loop, composed);
-      table = std::move(composed.table);
-    } else {
-      const Host host(work);
-      table = internal::compose_level<FT>(host, mask, host.numbering(), coarse, sources, loop);
-    }
-  }
+  Stencil_table<FT> table(sources);
+  if constexpr(has_sharpness_tags<NamedParameters>()) {
+    // the copy's tags are properties of the copy until it is handed out
+    const Copied_sharpness<PolygonMesh, FT> copied(mesh, work, tags);
+    table = refined_table(work, mask, copied.tags(), levels, topology_levels, sources, loop);
+    if(refined_sharpness != nullptr && refined_mesh != nullptr)
+      *refined_sharpness = copied.by_ordinal();
+  } else
+    table = refined_table(work, mask, tags, levels, topology_levels, sources, loop);
 
   if(refined_mesh != nullptr) {
+    const auto work_vpm = get(CGAL::vertex_point, work);
     table.apply(vertices(mesh), vpm, vertices(work), work_vpm, parameters::threads(loop.threads()));
     *refined_mesh = std::move(work);
   }
@@ -370,8 +415,19 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(const PolygonMesh& me
  *   - `max_memory` (default this machine's memory, in bytes): as `subdivide()`;
  *   - `threads` (default 1): with TBB, a `Surface_mesh` and double weights,
  *     the levels are composed in parallel; the table is the same with any
- *     number of threads.
- * \throws Bad_input as `subdivide()` does.
+ *     number of threads;
+ *   - `edge_sharpness_map`, `vertex_sharpness_map`, `crease_method`: the
+ *     sharpness tags of `mesh`, as `subdivide()` takes them (Loop,
+ *     Catmull-Clark, the linear masks). They are only read: the levels refine
+ *     a copy of them, so the table is that of `subdivide()` with the same tags
+ *     (the maps of `mesh` are not given the children's sharpness; refine the
+ *     `refined_mesh` with `subdivide()` to have it);
+ *   - `boundary_interpolation`, `triangle_subdivision`: checked against the
+ *     mask, as `subdivide()` does. A `face_hole_map` changes no row (the
+ *     vertices of a hole take part in the rules of their neighbours), so the
+ *     table does not read one.
+ * \throws Bad_input as `subdivide()` does (a negative or NaN sharpness
+ * included).
  */
 template <class PolygonMesh, class Mask, class NamedParameters = parameters::Default_named_parameters>
 Stencil_table<typename Mask::Number_type> make_stencil_table(const PolygonMesh& mesh, const Mask& mask,
@@ -386,7 +442,7 @@ Stencil_table<typename Mask::Number_type> make_stencil_table(const PolygonMesh& 
   PolygonMesh* refined_mesh = choose_parameter<PolygonMesh*>(get_parameter(np, internal::refined_mesh_t()), nullptr);
   const internal::Parallel_loop loop =
     std::is_floating_point<FT>::value ? internal::parallel_loop(np) : internal::Parallel_loop(1);
-  return internal::stencil_table_of(mesh, mask, vpm, levels, refined_mesh, loop, internal::max_memory_of(np));
+  return internal::stencil_table_of(mesh, mask, vpm, levels, refined_mesh, loop, internal::max_memory_of(np), np);
 }
 
 } // namespace Subdiv
