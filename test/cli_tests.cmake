@@ -365,8 +365,20 @@ subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}
   FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
-subdiv_surface_error(surface_tags_with_limit 1 "creases, corners, holes and boundary modes \\('[^']*catmark_cube_creases1.obj' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles\\): --limit and --displace do not take them yet"
-  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme catmull-clark --levels 1 --limit)
+subdiv_surface_error(surface_tags_with_displace 1 "creases, corners, holes and boundary modes \\('[^']*catmark_cube_creases1.obj' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles\\): --displace does not take them yet"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme catmull-clark --levels 1
+  --displace ${SUBDIV_CLI_DIR}/tetra_heights.txt)
+# --limit with tags: the cube with its 12 edges infinitely sharp is its own
+# limit (corners stay, the straight creases and flat faces keep their
+# points), so its 26 points after a level are the cube's, exactly; without
+# the tags they move inside (0.25 0.25 0.25 and the like)
+subdiv_cli_test(surface_limit_with_creases ARGS surface ${SUBDIV_CLI_DIR}/cube.off -o @WORK@/out.off
+  --scheme catmull-clark --levels 1 --sharp-angle 60 --limit
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24
+  CONTAINS "0 0 0" "1 0 0" "1 1 0" "0 1 0" "0 0 1" "1 0 1" "1 1 1" "0 1 1"
+    "0.5 0 0" "1 0.5 0" "0.5 1 0" "0 0.5 0" "0.5 0 1" "1 0.5 1" "0.5 1 1" "0 0.5 1"
+    "0 0 0.5" "1 0 0.5" "1 1 0.5" "0 1 0.5"
+    "0.5 0.5 0" "0.5 0.5 1" "0.5 0 0.5" "1 0.5 0.5" "0.5 1 0.5" "0 0.5 0.5")
 # --sharp-angle (CGAL::Subdiv::mark_sharp_edges): the cube's normals make 90
 # degrees at its 12 edges, so 60 makes them all infinitely sharp (24 halves
 # of sharpness 10 one level down), 100 none

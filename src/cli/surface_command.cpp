@@ -101,7 +101,9 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --limit               then move every vertex to its limit position (the
                         limit masks of the scheme's eigen-analysis; doo-sabin,
                         a dual scheme: the limit of the face the next step
-                        makes of the corners at the vertex)
+                        makes of the corners at the vertex). With creases and
+                        corners, a corner stays and a crease vertex goes to
+                        the limit of its crease curve
   --displace HEIGHTS    displacement: HEIGHTS holds one height per vertex of
                         INPUT, in INPUT's vertex order, one per line (a decimal
                         or a fraction; blank lines and # comments skipped).
@@ -256,10 +258,10 @@ int surface_command(const std::vector<std::string>& arguments)
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
-  if(tagged && (displace || args.has("--limit")))
+  if(tagged && displace)
     throw Input_error("creases, corners, holes and boundary modes ('" + input +
-                      "' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles): --limit and "
-                      "--displace do not take them yet");
+                      "' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles): --displace does "
+                      "not take them yet");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();
@@ -283,7 +285,7 @@ int surface_command(const std::vector<std::string>& arguments)
                                tagged ? &sharp_options : nullptr);
     if(args.has("--limit")) {
       const auto start = std::chrono::steady_clock::now();
-      project_surface_to_limit(mesh, scheme);
+      project_surface_to_limit(mesh, scheme, tagged ? &sharp_options : nullptr);
       result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }

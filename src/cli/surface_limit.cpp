@@ -30,17 +30,17 @@ namespace SD = CGAL::Subdiv;
 
 using Vertex = Surface::Vertex_index;
 
-// calls `f(mask)` with the mask of the scheme
+// calls `f(mask)` with the mask of the scheme, made with `options`
 template <class F>
-void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
+void with_mask(const Surface_scheme& scheme, const Surface& mesh, const Sharp_options& options, const F& f)
 {
   const std::string& name = scheme.name;
   if(name == "loop")
-    f(SD::Loop_mask<Surface>());
+    f(mask_with_options<SD::Loop_mask<Surface>>(options));
   else if(name == "loop-warren")
-    f(SD::Loop_warren_mask<Surface>());
+    f(mask_with_options<SD::Loop_warren_mask<Surface>>(options));
   else if(name == "catmull-clark")
-    f(SD::Catmull_clark_mask<Surface>());
+    f(mask_with_options<SD::Catmull_clark_mask<Surface>>(options));
   else if(name == "doo-sabin") // dual: the limit of each vertex's vertex face (doc/limit.md)
     f(SD::Doo_sabin_mask<Surface>());
   else if(name == "sqrt3")
@@ -59,12 +59,22 @@ void with_mask(const Surface_scheme& scheme, const Surface& mesh, const F& f)
     throw std::logic_error("no limit masks for scheme '" + name + "'"); // every scheme has them
 }
 
+// with `tagged`, the sharpness maps of the mesh (as the levels left them)
+// give each vertex its rule
 struct Project
 {
   Surface& mesh;
+  bool tagged;
   template <class Mask>
   void operator()(const Mask& mask) const
   {
+    if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
+      if(tagged) {
+        const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
+        const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
+        SD::project_to_limit(mesh, mask, SD::parameters::edge_sharpness_map(edges).vertex_sharpness_map(vertices));
+        return;
+      }
     SD::project_to_limit(mesh, mask);
   }
 };
@@ -115,9 +125,11 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
   return heights;
 }
 
-void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme)
+void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const Sharp_options* tags)
 {
-  with_mask(scheme, mesh, Project{mesh});
+  if(tags != nullptr && !scheme.run_sharp)
+    throw std::logic_error("--limit with tags and --scheme " + scheme.name + ": refused by the refinement first");
+  with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Project{mesh, tags != nullptr});
 }
 
 Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
@@ -132,7 +144,7 @@ Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int
   for(Vertex v : mesh.vertices())
     map[v] = heights.at(k++);
   // linear: the mask follows the mesh before refinement, as `linear` does
-  with_mask(scheme, mesh, Displace{mesh, levels, max_memory, map});
+  with_mask(scheme, mesh, Sharp_options(), Displace{mesh, levels, max_memory, map});
   mesh.remove_property_map(map);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.out = counts(mesh);

@@ -56,12 +56,12 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         .crease_method(options.method)
                         .face_hole_map(holes);
       if constexpr(std::is_constructible_v<Mask, SD::Border_corners>) {
-        const SD::Border_corners corners = SD::internal::border_corners_for(options.boundary);
+        const Mask mask = mask_with_options<Mask>(options);
         if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
-          SD::subdivide(mesh, Mask(corners, options.triangles),
+          SD::subdivide(mesh, mask,
                         np.boundary_interpolation(options.boundary).triangle_subdivision(options.triangles));
         else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
-          SD::subdivide(mesh, Mask(corners), np.boundary_interpolation(options.boundary));
+          SD::subdivide(mesh, mask, np.boundary_interpolation(options.boundary));
       } else {
         // `linear` (the row of the quad mask, whose call picks the split):
         // the tags move no point, they are carried; no boundary mode moves

@@ -17,6 +17,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace cgal_subdiv {
@@ -33,6 +34,25 @@ struct Sharp_options
   /// whether a tag was read (or an option of the command line set one)
   bool present = false;
 };
+
+/// a `Mask` with the options of `options`: the border corners of its
+/// boundary mode and, for Catmull-Clark, its triangle rule (the masks
+/// without such options as they are). The default options give the default
+/// masks.
+template <class Mask>
+Mask mask_with_options(const Sharp_options& options)
+{
+  namespace SD = CGAL::Subdiv;
+  const SD::Border_corners corners = SD::internal::border_corners_for(options.boundary);
+  if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
+    return Mask(corners, options.triangles);
+  else if constexpr(std::is_constructible_v<Mask, SD::Border_corners>)
+    return Mask(corners);
+  else {
+    (void)corners;
+    return Mask();
+  }
+}
 
 /*
  * Puts the sharpness of the `t crease` and `t corner` tags and the faces of
