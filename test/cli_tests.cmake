@@ -443,10 +443,17 @@ if(SUBDIV_SH)
                        PASS_REGULAR_EXPRESSION "nothing left behind")
 endif()
 
-# an interior vertex of valence 2 has no limit mask: the reason, not a crash
-subdiv_surface_error(surface_limit_valence_2 1
-  "project_to_limit \\(Catmull-Clark\\): vertex 0: an interior vertex of valence 2: the eigen-analysis covers valence 3 or more"
-  ARGS surface ${hostile}/pillow_valence_2.off ${mesh_out} --scheme catmull-clark --levels 0 --limit)
+# an interior vertex of valence 2: Catmull-Clark's limit is the closed form
+# (4 v + 4 (e1 + e2) + f1 + f2) / 14, here (3/7, 3/7) for the pillow's vertex 0
+# (whose two faces share the opposite corner); Loop has no limit mask there:
+# the reason, not a crash
+subdiv_cli_test(surface_limit_valence_2 ARGS surface ${hostile}/pillow_valence_2.off -o @WORK@/out.off
+  --scheme catmull-clark --levels 0 --limit
+  OUTPUT @WORK@/out.off VERTICES 4 FACES 2
+  CONTAINS "0.42857142857142855 0.42857142857142855 0" "0.5714285714285714 0.5714285714285714 0")
+subdiv_surface_error(surface_limit_triangle_valence_2 1
+  "project_to_limit \\(Loop[^)]*\\)\\): vertex 0: an interior vertex of valence 2: the eigen-analysis of triangle schemes covers valence 3 or more"
+  ARGS surface ${hostile}/pillow_triangles_valence_2.off ${mesh_out} --scheme loop --levels 0 --limit)
 
 # --- non-finite results are errors, nothing is written ---------------------------
 subdiv_surface_error(surface_non_finite_result 1

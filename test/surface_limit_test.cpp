@@ -134,15 +134,22 @@ TEST(LimitMasks, come_from_the_analysis)
       EXPECT_EQ(m.limit[static_cast<std::size_t>(i)], (Q(1) - centre) / Q(n));
     EXPECT_TRUE(m.tangents);
   }
+  // Catmull-Clark from valence 2 (two quads sharing both edges at the centre,
+  // OpenSubdiv's val2 shapes): (n^2 v + 4 sum e + sum f) / (n (n + 5)), the
+  // closed form OpenSubdiv evaluates at n = 2 too. At n = 2 the subdominant
+  // eigenvalue 1/4 is simple: no tangent plane, face normals
   const auto cc = SD::Limit_evaluator<SD::Catmull_clark_mask<Mesh, double>>();
-  for(int n = 3; n <= 8; ++n) {
+  for(int n = 2; n <= 8; ++n) {
     const SD::Limit_masks& m = cc.masks(n, false);
+    ASSERT_EQ(m.limit.size(), static_cast<std::size_t>(2 * n + 1));
     const Q d(n * (n + 5));
     EXPECT_EQ(m.limit[0], Q(n * n) / d);
     for(int i = 1; i <= 2 * n; ++i)
       EXPECT_EQ(m.limit[static_cast<std::size_t>(i)], (i % 2 == 1 ? Q(4) : Q(1)) / d);
-    EXPECT_TRUE(m.tangents);
+    EXPECT_EQ(m.tangents, n >= 3) << "valence " << n;
   }
+  EXPECT_NEAR(cc.masks(2, false).subdominant.real(), 0.25, 1e-12);
+  EXPECT_NEAR(cc.masks(2, false).subdominant.imag(), 0, 1e-12);
   for(int k = 1; k <= 5; ++k) {
     const SD::Limit_masks& m = cc.masks(k, true);
     EXPECT_EQ(m.limit[0], Q(2) / Q(3));
@@ -169,6 +176,34 @@ TEST(LimitMasks, come_from_the_analysis)
 // double spectrum alone (the pole shapes of OpenSubdiv: valence 64 took 8 s,
 // 360 did not finish): still the closed forms, to double precision, and the
 // tangents stand
+// Catmull-Clark at an interior vertex of valence 2 (OpenSubdiv's
+// catmark_val2_interior: vertex 16 splits a quad of a grid in two): the
+// refined points of the vertex converge to the analysis' limit, the error
+// shrinking by about 4 per level (the subdominant eigenvalue 1/4). OpenSubdiv's
+// PrimvarRefiner::Limit returns the vertex itself there (the corner mask),
+// which refinement leaves behind (sharp_features_test).
+TEST(LimitMasks, valence_2_is_where_refinement_converges)
+{
+  Mesh coarse;
+  ASSERT_TRUE(
+    testing_utils::read_obj_positions(testing_utils::test_mesh("opensubdiv/catmark_val2_interior.obj"), coarse));
+  const V centre(16);
+  ASSERT_FALSE(coarse.is_border(centre));
+  ASSERT_EQ(coarse.degree(centre), 2u);
+  Mesh limit = coarse;
+  SD::project_to_limit(limit, SD::Catmull_clark_mask<Mesh>());
+  EXPECT_NEAR(limit.point(centre).y(), -0.5 * 2 / 7, 1e-15); // 2/7 of the vertex, its four neighbours at y = 0
+  Mesh refined = coarse;
+  double error = std::sqrt(CGAL::squared_distance(refined.point(centre), limit.point(centre)));
+  for(int level = 1; level <= 5; ++level) {
+    SD::catmull_clark_subdivision(refined, SD::parameters::number_of_iterations(1));
+    const double finer = std::sqrt(CGAL::squared_distance(refined.point(centre), limit.point(centre)));
+    EXPECT_LT(finer, error / 3) << "level " << level;
+    error = finer;
+  }
+  EXPECT_LT(error, 1e-3);
+}
+
 TEST(LimitMasks, high_valence_in_doubles_keeps_the_closed_forms)
 {
   ASSERT_EQ(SD::internal::max_exact_limit_valence, 24);
@@ -779,6 +814,16 @@ TEST(LimitErrors, refusals_name_the_problem)
     testing_utils::bad_input_message([&] { SD::project_to_limit(pillow, SD::Doo_sabin_mask<decltype(pillow)>()); });
   EXPECT_NE(dual.find("project_to_limit (Doo-Sabin): vertex 0: "), std::string::npos) << dual;
   EXPECT_EQ(points_of(pillow)[0], K::Point_3(0, 0, 0)); // unchanged
+  // Loop at an interior vertex of valence 2 (two triangles sharing all three edges): no analysed neighbourhood
+  Mesh triangles = testing_utils::mesh_of<Mesh>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {2, 1, 0}});
+  ASSERT_EQ(num_faces(triangles), 2u);
+  const std::string loop =
+    testing_utils::bad_input_message([&] { SD::project_to_limit(triangles, SD::Loop_mask<decltype(triangles)>()); });
+  EXPECT_NE(loop.find("vertex 0: an interior vertex of valence 2: the eigen-analysis of triangle schemes covers "
+                      "valence 3 or more"),
+            std::string::npos)
+    << loop;
+  EXPECT_EQ(points_of(triangles)[1], K::Point_3(1, 0, 0)); // unchanged
 }
 
 } // namespace

@@ -76,14 +76,17 @@ inline Patch build_patch(int face_size, bool face_centred, int n, bool border, i
   require(
     !(face_centred && border),
     "build_patch: the border neighbourhoods of face-centred (dual) schemes are made by refinement (analysis_patch)");
-  require(face_centred || border || n >= 3,
+  require(face_centred || border || n >= 3 || (n == 2 && face_size == 4),
           "an interior vertex of valence " + std::to_string(n) +
-            ": the eigen-analysis covers valence 3 or more (at valence 2 the two faces share both edges, and "
-            "refinement keeps the valence, so no level of it has an analysed neighbourhood; doc/limit.md)");
+            ": the eigen-analysis of triangle schemes covers valence 3 or more (at valence 2 the two triangles "
+            "share all three edges, so no level of refinement has an analysed neighbourhood; doc/limit.md)");
   require(!face_centred || n >= 3, "a face needs 3 or more corners, got " + std::to_string(n));
   const int sectors = n;
   const double angle = (border ? 3.14159265358979323846 : 2 * 3.14159265358979323846) / n;
   const auto direction = [&](int i) -> std::pair<double, double> { return {std::cos(angle * i), std::sin(angle * i)}; };
+  // interior valence 2: two sectors of pi, which a linear map of the grid
+  // quadrant would flatten onto a line; they are laid out by angle instead
+  const bool half_plane_sectors = !border && !face_centred && n == 2;
   Patch patch;
   Analysis_mesh& mesh = patch.mesh;
   std::map<std::tuple<int, int, int>, Analysis_vertex> ids;
@@ -105,9 +108,16 @@ inline Patch build_patch(int face_size, bool face_centred, int n, bool border, i
     const auto found = ids.find(key);
     if(found != ids.end())
       return found->second;
-    const auto u = direction(i), w = direction(i + 1);
-    const double x = (a + offset) * u.first + (b + offset) * w.first;
-    const double y = (a + offset) * u.second + (b + offset) * w.second;
+    double x = 0, y = 0;
+    if(half_plane_sectors) { // grid polar angle [0, pi/2] stretched to the sector's [pi i, pi (i + 1)]
+      const double r = std::hypot(a, b), theta = angle * i + 2 * std::atan2(b, a);
+      x = r * std::cos(theta);
+      y = r * std::sin(theta);
+    } else {
+      const auto u = direction(i), w = direction(i + 1);
+      x = (a + offset) * u.first + (b + offset) * w.first;
+      y = (a + offset) * u.second + (b + offset) * w.second;
+    }
     const Analysis_vertex v = mesh.add_vertex(Analysis_mesh::Point(x, y, 0));
     ids.emplace(key, v);
     return v;
