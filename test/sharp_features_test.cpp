@@ -984,4 +984,41 @@ TEST(SharpFeatures, children_of_holes_are_holes)
   EXPECT_EQ(count, 16u);
 }
 
+// The limit of a corner or a crease vertex is its rule's, whatever the
+// analysis covers: a triangle pillow (two triangles on three shared edges,
+// every vertex of interior valence 2, which the analysis of triangle schemes
+// refuses) has a limit once its vertices are tagged, in rationals.
+TEST(SharpFeatures, tagged_vertices_need_no_analysis)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  Exact_mesh pillow;
+  const auto a = pillow.add_vertex(EK::Point_3(0, 0, 0)), b = pillow.add_vertex(EK::Point_3(1, 0, 0)),
+             c = pillow.add_vertex(EK::Point_3(0, 1, 0));
+  ASSERT_TRUE(pillow.add_face(a, b, c) != Exact_mesh::null_face());
+  ASSERT_TRUE(pillow.add_face(c, b, a) != Exact_mesh::null_face());
+  const Sd::Loop_warren_mask<Exact_mesh> mask;
+  Exact_mesh untagged = pillow;
+  try {
+    Sd::project_to_limit(untagged, mask);
+    ADD_FAILURE() << "the untagged pillow has a limit";
+  } catch(const Sd::Bad_input& e) {
+    EXPECT_NE(std::string(e.what()).find("valence 3 or more"), std::string::npos) << e.what();
+  }
+
+  Exact_mesh cornered = pillow;
+  auto corners = cornered.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(10)).first;
+  Sd::project_to_limit(cornered, mask, Sd::parameters::vertex_sharpness_map(corners));
+  for(auto v : vertices(cornered))
+    EXPECT_EQ(cornered.point(v), pillow.point(v)) << "corner " << v;
+
+  Exact_mesh creased = pillow; // every vertex has two sharp edges: 2/3 v + 1/6 (u + w)
+  auto sharp = creased.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(10)).first;
+  Sd::project_to_limit(creased, mask, Sd::parameters::edge_sharpness_map(sharp));
+  EXPECT_EQ(creased.point(a), EK::Point_3(FT(1) / 6, FT(1) / 6, 0));
+  EXPECT_EQ(creased.point(b), EK::Point_3(FT(2) / 3, FT(1) / 6, 0));
+  EXPECT_EQ(creased.point(c), EK::Point_3(FT(1) / 6, FT(2) / 3, 0));
+}
+
 } // namespace

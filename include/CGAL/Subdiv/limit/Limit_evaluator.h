@@ -180,29 +180,64 @@ public:
   internal::Limit_rows<FT> rows(const PolygonMesh& mesh, const VertexPointMap& vpm, const std::string& caller,
                                 const Tags& tags = Tags()) const
   {
-    internal::Limit_rows<FT> result = unsharpened_rows<FT>(mesh, vpm, caller);
-    sharpen(result, mesh, tags, caller);
-    return result;
-  }
-
-private:
-  template <class FT, class PolygonMesh, class VertexPointMap>
-  internal::Limit_rows<FT> unsharpened_rows(const PolygonMesh& mesh, const VertexPointMap& vpm,
-                                            const std::string& caller) const
-  {
     const auto m = mask<PolygonMesh, FT>();
-    using Host = Host_of<std::decay_t<decltype(m)>>;
+    using M = std::decay_t<decltype(m)>;
+    using Host = Host_of<M>;
     internal::check_mesh(mesh, vpm, m.name(), Host::required_face_size);
     const auto cached = [this](int n, bool border) -> const Limit_masks& { return masks(n, border); };
     const std::string who = caller + " (" + m.name() + ")";
     if constexpr(Host::face_centred) {
+      static_assert(std::is_same<Tags, internal::No_sharpness_tags>::value,
+                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
       return internal::dual_limit_rows(cached, m, mesh, who);
     } else {
-      std::vector<std::size_t> targets(num_vertices(mesh));
-      for(std::size_t k = 0; k < targets.size(); ++k)
-        targets[k] = k;
-      return internal::limit_rows(cached, m, mesh, targets, targets, max_extra_levels, 0, who);
+      internal::Limit_rows<FT> result; // sized by sharpen() where there are tags
+      const std::vector<std::size_t> smooth = sharpen(result, mesh, tags, who);
+      internal::Limit_rows<FT> analysed =
+        internal::limit_rows(cached, m, mesh, smooth, smooth, max_extra_levels, 0, who);
+      if(smooth.size() == num_vertices(mesh))
+        return analysed; // no vertex is a corner or a crease
+      for(std::size_t k = 0; k < smooth.size(); ++k) {
+        result.position[smooth[k]] = std::move(analysed.position[k]);
+        for(int a = 0; a < 2; ++a)
+          result.tangent[a][smooth[k]] = std::move(analysed.tangent[a][k]);
+        result.has_tangents[smooth[k]] = analysed.has_tangents[k];
+      }
+      return result;
     }
+  }
+
+private:
+  /*
+   * The sharpness tags `tags` (`internal::sharpness_tags_of`), if any, at the
+   * mesh's level (`internal::sharp_limit_rows`): checked as `subdivide()`
+   * checks them, then the corners and creases get their limit rows in
+   * `rows` (sized to the mesh). Returns the other vertices (ordinals), those the analysis
+   * evaluates. The linear masks take tags and move no point for them: every
+   * vertex is the analysis'.
+   */
+  template <class FT, class PolygonMesh, class Tags>
+  std::vector<std::size_t> sharpen(internal::Limit_rows<FT>& rows, const PolygonMesh& mesh, const Tags& tags,
+                                   const std::string& who) const
+  {
+    if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
+      const auto m = mask<PolygonMesh, FT>();
+      using M = std::decay_t<decltype(m)>;
+      static_assert(internal::Takes_sharpness_tags<M>::value,
+                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
+      if constexpr(internal::Has_crease_curve<M>::value) {
+        tags.check(mesh, who);
+        rows = internal::Limit_rows<FT>(num_vertices(mesh));
+        // the rules of this level do not depend on how sharpness decays
+        return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)),
+                                          m.crease_curve());
+      }
+    }
+    (void)tags, (void)who;
+    std::vector<std::size_t> every(num_vertices(mesh));
+    for(std::size_t k = 0; k < every.size(); ++k)
+      every[k] = k;
+    return every;
   }
 
 public:
@@ -353,31 +388,6 @@ public:
   }
 
 private:
-  /*
-   * The sharpness tags `tags` (`internal::sharpness_tags_of`), if any, at the
-   * mesh's level (`internal::apply_sharp_limits`): checked as `subdivide()`
-   * checks them, then the corners and creases get their limit rows. The
-   * linear masks take tags and move no point for them: nothing to do.
-   */
-  template <class FT, class PolygonMesh, class Tags>
-  void sharpen(internal::Limit_rows<FT>& rows, const PolygonMesh& mesh, const Tags& tags,
-               const std::string& caller) const
-  {
-    if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
-      const auto m = mask<PolygonMesh, FT>();
-      using M = std::decay_t<decltype(m)>;
-      static_assert(internal::Takes_sharpness_tags<M>::value,
-                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
-      if constexpr(internal::Has_crease_curve<M>::value) {
-        tags.check(mesh, caller + " (" + m.name() + ")");
-        // the rules of this level do not depend on how sharpness decays
-        internal::apply_sharp_limits(rows, mesh, tags.level(mesh, internal::border_corners_of(m)), m.crease_curve());
-      }
-    } else {
-      (void)rows, (void)mesh, (void)tags, (void)caller;
-    }
-  }
-
   /*
    * One evaluation of a mesh: its limit rows and what they give, by vertex
    * order: the limit points and the tangent vectors (double).

@@ -215,14 +215,14 @@ struct Crease_curve_scheme
  * the limit of the curve rule along its two sharp edges (the left fixed
  * vector of the curve's local matrix, over the two crease neighbours and the
  * vertex: the cubic B-spline's 1/6, 2/3, 1/6); neither has tangent rows (the
- * normal there is the faces'). Smooth vertices and darts keep the rows of
- * the analysis: the children of a smooth vertex's ring follow smooth rules
- * only, whatever the tags around it; a dart gets the smooth masks, as in
- * OpenSubdiv.
+ * normal there is the faces'). Fills those rows of `rows` and returns the
+ * other vertices (ordinals), whose rows are the analysis': the children of a
+ * smooth vertex's ring follow smooth rules only, whatever the tags around
+ * it; a dart gets the smooth masks, as in OpenSubdiv.
  */
 template <class FT, class Mesh>
-void apply_sharp_limits(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_level<Mesh, FT>& level,
-                        const Border_curve_rule<FT>& curve)
+std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_level<Mesh, FT>& level,
+                                          const Border_curve_rule<FT>& curve)
 {
   const Crease_curve_scheme<FT> scheme{curve};
   const std::pair<int, int> window = invariant_window(scheme);
@@ -230,23 +230,22 @@ void apply_sharp_limits(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_leve
   CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
   (void)window;
   const Mesh_numbering<Mesh> number(mesh);
+  std::vector<std::size_t> smooth;
   for(std::size_t k = 0; k < rows.position.size(); ++k) {
     const Vertex_view<Mesh> v = level.vertex_view(number.vertex(k));
-    if(v.rule() != Vertex_rule::corner && v.rule() != Vertex_rule::crease)
+    if(v.rule() != Vertex_rule::corner && v.rule() != Vertex_rule::crease) {
+      smooth.push_back(k);
       continue;
-    Stencil<std::uint32_t, FT> position;
-    if(v.rule() == Vertex_rule::corner) {
-      position.add(static_cast<std::uint32_t>(k), FT(1));
-    } else {
-      position.add(static_cast<std::uint32_t>(number(target(v.crease_out(0), mesh))), crease[0]);
-      position.add(static_cast<std::uint32_t>(k), crease[1]);
-      position.add(static_cast<std::uint32_t>(number(target(v.crease_out(1), mesh))), crease[2]);
     }
-    rows.position[k] = std::move(position);
-    rows.tangent[0][k] = Stencil<std::uint32_t, FT>();
-    rows.tangent[1][k] = Stencil<std::uint32_t, FT>();
-    rows.has_tangents[k] = 0;
+    if(v.rule() == Vertex_rule::corner) {
+      rows.position[k].add(static_cast<std::uint32_t>(k), FT(1));
+    } else {
+      rows.position[k].add(static_cast<std::uint32_t>(number(target(v.crease_out(0), mesh))), crease[0]);
+      rows.position[k].add(static_cast<std::uint32_t>(k), crease[1]);
+      rows.position[k].add(static_cast<std::uint32_t>(number(target(v.crease_out(1), mesh))), crease[2]);
+    }
   }
+  return smooth;
 }
 
 /*
