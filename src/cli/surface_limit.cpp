@@ -127,8 +127,7 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
 
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const Sharp_options* tags)
 {
-  if(tags != nullptr && !scheme.run_sharp)
-    throw std::logic_error("--limit with tags and --scheme " + scheme.name + ": refused by the refinement first");
+  CGAL_precondition(tags == nullptr || scheme.run_sharp); // subdivide_surface() refuses the others first
   with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Project{mesh, tags != nullptr});
 }
 

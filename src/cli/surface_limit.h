@@ -27,7 +27,9 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices);
  * moves every vertex of `mesh` to its limit position under `scheme`; with
  * `tags`, under the boundary mode and triangle rule of `tags`, and with the
  * sharpness maps of `mesh` (as the refinement left them): a corner stays, a
- * crease goes to the limit of its curve (`CGAL::Subdiv::project_to_limit()`)
+ * crease goes to the limit of its curve (`CGAL::Subdiv::project_to_limit()`).
+ * Tags only for a scheme that takes them (`scheme.run_sharp`): the refinement
+ * before refuses the others.
  * \throws CGAL::Subdiv::Bad_input when the analysis does not cover a vertex
  */
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const Sharp_options* tags = nullptr);

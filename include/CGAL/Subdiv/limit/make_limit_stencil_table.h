@@ -77,11 +77,11 @@ Limit_stencil_tables make_limit_stencil_tables(const PolygonMesh& mesh, const Li
     return evaluator.template rows<double>(refined, get_const_property_map(CGAL::vertex_point, refined),
                                            "make_limit_stencil_tables", tags);
   };
-  const internal::Mesh_numbering<PolygonMesh> refined_number(refined);
   const internal::Limit_rows<double> rows = [&] {
-    if constexpr(internal::has_sharpness_tags<NamedParameters>())
+    if constexpr(internal::has_sharpness_tags<NamedParameters>()) {
+      const internal::Mesh_numbering<PolygonMesh> refined_number(refined);
       return limit_rows(internal::tags_by_ordinal(refined_number, refined_sharpness));
-    else
+    } else
       return limit_rows(internal::No_sharpness_tags());
   }();
   const auto to_table = [&](const internal::Rows<double>& r) {

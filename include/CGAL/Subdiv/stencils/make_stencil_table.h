@@ -363,15 +363,18 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(
   if(topology_levels == 0 && levels == 1) // the input's topology is all it needs: no copy
     return compose_on_host<FT>(mesh, mask, tags, nullptr, sources, loop);
   PolygonMesh work = mesh;
-  Stencil_table<FT> table(sources);
-  if constexpr(has_sharpness_tags<NamedParameters>()) {
-    // the copy's tags are properties of the copy until it is handed out
-    const Copied_sharpness<PolygonMesh, FT> copied(mesh, work, tags);
-    table = refined_table(work, mask, copied.tags(), levels, topology_levels, sources, loop);
-    if(refined_sharpness != nullptr && refined_mesh != nullptr)
-      *refined_sharpness = copied.by_ordinal();
-  } else
-    table = refined_table(work, mask, tags, levels, topology_levels, sources, loop);
+  const auto refine_work = [&]() {
+    if constexpr(has_sharpness_tags<NamedParameters>()) {
+      // the copy's tags are properties of the copy until it is handed out
+      const Copied_sharpness<PolygonMesh, FT> copied(mesh, work, tags);
+      Stencil_table<FT> refined = refined_table(work, mask, copied.tags(), levels, topology_levels, sources, loop);
+      if(refined_sharpness != nullptr && refined_mesh != nullptr)
+        *refined_sharpness = copied.by_ordinal();
+      return refined;
+    } else
+      return refined_table(work, mask, tags, levels, topology_levels, sources, loop);
+  };
+  Stencil_table<FT> table = refine_work();
 
   if(refined_mesh != nullptr) {
     const auto work_vpm = get(CGAL::vertex_point, work);
