@@ -365,9 +365,16 @@ subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}
   FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
-subdiv_surface_error(surface_tags_with_displace 1 "creases, corners, holes and boundary modes \\('[^']*catmark_cube_creases1.obj' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles\\): --displace does not take them yet"
-  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme catmull-clark --levels 1
-  --displace ${SUBDIV_CLI_DIR}/tetra_heights.txt)
+# --displace with tags: the cube with its 12 edges infinitely sharp is its
+# own limit (surface_limit_with_creases), and heights of 1 push every point
+# out by 1 along its normal: the faces' own at a face centre (a regular
+# smooth vertex), the mean of the faces' at a crease and at a corner
+subdiv_cli_test(surface_displace_with_creases ARGS surface ${SUBDIV_CLI_DIR}/cube.off -o @WORK@/out.off
+  --scheme catmull-clark --levels 1 --sharp-angle 60 --displace ${SUBDIV_CLI_DIR}/cube_heights_one.txt
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24
+  CONTAINS "0.5 0.5 -1" "0.5 0.5 2" "0.5 -1 0.5" "2 0.5 0.5"
+  FILE @WORK@/out.off
+  FILE_REGEX "\n-0\\.57735026918962[0-9]* -0\\.57735026918962[0-9]* -0\\.57735026918962[0-9]*\n.*\n0\\.5 -0\\.70710678118654[0-9]* -0\\.70710678118654[0-9]*\n")
 # --limit with tags: the cube with its 12 edges infinitely sharp is its own
 # limit (corners stay, the straight creases and flat faces keep their
 # points), so its 26 points after a level are the cube's, exactly; without
@@ -575,7 +582,16 @@ subdiv_analyse_json(bezier_3 bezier analyse --scheme bezier --json)
 # errors: one line on stderr, exit 1 (cannot be analysed) or 2 (malformed command line)
 subdiv_cli_error(analyse_valence_too_small 1 "the valence of an interior vertex must be between 3 and 32, got 2"
   ARGS analyse --scheme loop --valence 2)
-subdiv_cli_error(analyse_valence_too_large 1 "must be between 3 and 32, got 33" ARGS analyse --scheme catmull-clark --valence 33)
+# Catmull-Clark at interior valence 2: two quads laid out as half-planes; the
+# closed-form limit 2/7 v + 2/7 (e1 + e2) + 1/14 (f1 + f2), and no C1 (1/4
+# twice but -1/4 as large)
+subdiv_cli_test(analyse_catmull_clark_valence_2 ARGS analyse --scheme catmull-clark --valence 2
+  STDOUT_REGEX "at an interior vertex of valence 2\n.*eigenvalues +1, 0\\.25 \\(1/4\\) \\(x2\\), -0\\.25 \\(-1/4\\), 0\\.125 \\(1/8\\)\n.*\n  C1 +no\n  limit mask, centre +2/7\n  limit mask, others +2/7 1/14 2/7 1/14 ")
+subdiv_cli_error(analyse_catmull_clark_valence_too_small 1
+  "the valence of an interior vertex must be between 2 and 32, got 1" ARGS analyse --scheme catmull-clark --valence 1)
+subdiv_cli_error(analyse_doo_sabin_two_corners 1 "the number of corners of the central face must be between 3 and 32, got 2"
+  ARGS analyse --scheme doo-sabin --valence 2)
+subdiv_cli_error(analyse_valence_too_large 1 "must be between 2 and 32, got 33" ARGS analyse --scheme catmull-clark --valence 33)
 subdiv_cli_error(analyse_border_zero 1 "the number of faces at a border vertex must be between 1 and 32, got 0"
   ARGS analyse --scheme loop --valence 0 --boundary)
 subdiv_cli_test(analyse_sqrt3_border ARGS analyse --scheme sqrt3 --valence 4 --boundary

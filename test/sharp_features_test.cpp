@@ -1021,4 +1021,48 @@ TEST(SharpFeatures, tagged_vertices_need_no_analysis)
   EXPECT_EQ(creased.point(c), EK::Point_3(FT(1) / 6, FT(2) / 3, 0));
 }
 
+// displace() with tags: its levels refine the tags and its limit takes those
+// of the refined mesh, so zero heights carried through two levels of a cube
+// with 4 infinitely sharp edges and 8 semi-sharp ones (1.5: sharp on the
+// first level, blended on the second, smooth at the limit) give what
+// subdivide() (carrying the heights) then project_to_limit() give with the
+// same tags, bit for bit; and the displaced mesh holds the children's
+// sharpness.
+TEST(SharpFeatures, displace_takes_the_tags)
+{
+  Mesh displaced = testing_utils::cube<Mesh>();
+  auto heights = displaced.add_property_map<Mesh::Vertex_index, double>("v:height", 0).first;
+  Edge_sharpness sharpness = displaced.add_property_map<Mesh::Edge_index, double>("e:sharpness", 1.5).first;
+  for(std::size_t e = 0; e < 4; ++e)
+    sharpness[Mesh::Edge_index(static_cast<Mesh::size_type>(e))] = 10;
+  Mesh expected = displaced;
+  Edge_sharpness expected_sharpness = expected.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+  const Sd::Catmull_clark_mask<Mesh> mask;
+  Sd::displace(displaced, mask, heights, Sd::parameters::number_of_iterations(2).edge_sharpness_map(sharpness));
+  // the heights are carried as displace() carries them (their stencils give the points too)
+  Sd::Carried_data<Mesh, double> heights_of_expected;
+  heights_of_expected.vertex_map(expected.property_map<Mesh::Vertex_index, double>("v:height").first);
+  Sd::subdivide(
+    expected, mask,
+    Sd::parameters::number_of_iterations(2).edge_sharpness_map(expected_sharpness).carried_data(heights_of_expected));
+  Sd::project_to_limit(expected, mask, Sd::parameters::edge_sharpness_map(expected_sharpness));
+  ASSERT_EQ(num_vertices(displaced), num_vertices(expected));
+  for(auto v : vertices(displaced))
+    ASSERT_EQ(displaced.point(v), expected.point(v)) << "vertex " << v;
+  std::size_t sharp = 0;
+  for(auto e : edges(displaced)) {
+    ASSERT_EQ(sharpness[e], expected_sharpness[e]) << "edge " << e;
+    ASSERT_TRUE(sharpness[e] == 10 || sharpness[e] == 0) << "edge " << e << ": " << sharpness[e];
+    sharp += sharpness[e] == 10 ? 1 : 0;
+  }
+  EXPECT_EQ(sharp, 16u); // the 4 infinitely sharp edges, in 4 quarters each
+  Mesh untagged = testing_utils::cube<Mesh>();
+  auto untagged_heights = untagged.add_property_map<Mesh::Vertex_index, double>("v:height", 0).first;
+  Sd::displace(untagged, mask, untagged_heights, Sd::parameters::number_of_iterations(2));
+  std::size_t differing = 0;
+  for(auto v : vertices(untagged))
+    differing += untagged.point(v) == displaced.point(v) ? 0 : 1;
+  EXPECT_GT(differing, 0u);
+}
+
 } // namespace

@@ -135,9 +135,10 @@ TEST(LimitMasks, come_from_the_analysis)
     EXPECT_TRUE(m.tangents);
   }
   // Catmull-Clark from valence 2 (two quads sharing both edges at the centre,
-  // OpenSubdiv's val2 shapes): (n^2 v + 4 sum e + sum f) / (n (n + 5)), the
-  // closed form OpenSubdiv evaluates at n = 2 too. At n = 2 the subdominant
-  // eigenvalue 1/4 is simple: no tangent plane, face normals
+  // OpenSubdiv's val2 shapes): (n^2 v + 4 sum e + sum f) / (n (n + 5)),
+  // OpenSubdiv's closed form (Far takes the corner mask at n = 2 instead:
+  // doc/limit.md). At n = 2 the subdominant 1/4 (twice) ties with -1/4: no
+  // tangent plane, face normals
   const auto cc = SD::Limit_evaluator<SD::Catmull_clark_mask<Mesh, double>>();
   for(int n = 2; n <= 8; ++n) {
     const SD::Limit_masks& m = cc.masks(n, false);

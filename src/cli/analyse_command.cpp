@@ -32,7 +32,8 @@ the smoothness verdict and the limit mask.
                       bspline [--degree K], bezier [--degree K], chaikin,
                       corner-cutting [--a A --b B], four-point [--w W]
   --valence N       surfaces: the valence of the interior vertex, 3 <= N <= 32
-                    (doo-sabin: the number of corners of the central face);
+                    (catmull-clark: 2 <= N; doo-sabin: the number of
+                    corners of the central face);
                     with --boundary the number of faces around the border
                     vertex, 1 <= N <= 32 (the exact analysis costs
                     about the cube of the neighbourhood size: seconds at 32)

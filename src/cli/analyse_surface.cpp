@@ -102,7 +102,10 @@ Surface_summary analyse_surface(const std::string& keyword, int valence, bool bo
     throw Usage_error("unknown scheme '" + keyword + "'");
   if(boundary && !facts->border_analysis)
     throw Input_error("border vertices of " + keyword + " are not analysed");
-  const int low = boundary ? 1 : 3;
+  // interior valence 2: quad faces only (doc/limit.md); a triangle scheme
+  // or a face of two corners cannot be laid out
+  const bool quad_primal = facts->split == "quad split";
+  const int low = boundary ? 1 : (quad_primal ? 2 : 3);
   if(valence < low || valence > max_analysed_valence) {
     const std::string what = boundary      ? "the number of faces at a border vertex"
                              : facts->dual ? "the number of corners of the central face"

@@ -286,14 +286,19 @@ void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int le
                                              "--max-memory raises it");
 }
 
-Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
-                                 const Level_callback& on_level, const Sharp_options* tags)
+void refuse_tags_unless_taken(const Surface_scheme& scheme, const Sharp_options* tags)
 {
   if(tags != nullptr && !scheme.run_sharp)
     throw Input_error(
       "--scheme " + scheme.name +
       " does not take OpenSubdiv's crease, corner and boundary tags yet, nor --sharp-angle and the boundary "
       "options (loop, loop-warren, catmull-clark and linear do)");
+}
+
+Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
+                                 const Level_callback& on_level, const Sharp_options* tags)
+{
+  refuse_tags_unless_taken(scheme, tags);
   const auto run = [&](int n) {
     if(tags != nullptr)
       scheme.run_sharp(mesh, n, max_memory, *tags);

@@ -140,6 +140,9 @@ double predicted_faces(const Surface_scheme& scheme, double faces, int levels);
 /// \throws CGAL::Subdiv::Bad_input that names the output faces and GB
 void check_output_size(const Surface_scheme& scheme, const Surface& mesh, int levels, double max_memory);
 
+/// \throws Input_error when there are `tags` and `scheme` does not take them
+void refuse_tags_unless_taken(const Surface_scheme& scheme, const Sharp_options* tags);
+
 /*
  * refines `mesh` `levels` times with `scheme`. Checks first that the output
  * fits in `max_memory` bytes (0: this machine's memory; negative levels and

@@ -258,10 +258,6 @@ int surface_command(const std::vector<std::string>& arguments)
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
-  if(tagged && displace)
-    throw Input_error("creases, corners, holes and boundary modes ('" + input +
-                      "' tags, --sharp-angle, --boundary, --crease-method, --smooth-triangles): --displace does "
-                      "not take them yet");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();
@@ -279,7 +275,7 @@ int surface_command(const std::vector<std::string>& arguments)
   const bool by_level = verbose || predicted_faces(scheme, static_cast<double>(mesh.number_of_faces()), levels) >= 1e6;
   Surface_result result;
   if(displace) {
-    result = displace_surface(mesh, scheme, levels, max_memory, heights);
+    result = displace_surface(mesh, scheme, levels, max_memory, heights, tagged ? &sharp_options : nullptr);
   } else {
     result = subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback(),
                                tagged ? &sharp_options : nullptr);

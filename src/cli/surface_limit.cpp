@@ -59,35 +59,42 @@ void with_mask(const Surface_scheme& scheme, const Surface& mesh, const Sharp_op
     throw std::logic_error("no limit masks for scheme '" + name + "'"); // every scheme has them
 }
 
-// with `tagged`, the sharpness maps of the mesh (as the levels left them)
+// with `tags`, the sharpness maps of the mesh (as the levels left them)
 // give each vertex its rule
 struct Project
 {
   Surface& mesh;
-  bool tagged;
+  const Sharp_options* tags;
   template <class Mask>
   void operator()(const Mask& mask) const
   {
     if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
-      if(tagged) {
-        const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
-        const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
-        SD::project_to_limit(mesh, mask, SD::parameters::edge_sharpness_map(edges).vertex_sharpness_map(vertices));
+      if(tags != nullptr) {
+        SD::project_to_limit(mesh, mask, tag_parameters<Mask>(mesh, *tags));
         return;
       }
     SD::project_to_limit(mesh, mask);
   }
 };
 
+// with `tags`, the levels refine the sharpness maps of the mesh and the
+// limit takes them
 struct Displace
 {
   Surface& mesh;
   int levels;
   double max_memory;
   Surface::Property_map<Vertex, double> heights;
+  const Sharp_options* tags;
   template <class Mask>
   void operator()(const Mask& mask) const
   {
+    if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
+      if(tags != nullptr) {
+        SD::displace(mesh, mask, heights,
+                     tag_parameters<Mask>(mesh, *tags).number_of_iterations(levels).max_memory(max_memory));
+        return;
+      }
     SD::displace(mesh, mask, heights, SD::parameters::number_of_iterations(levels).max_memory(max_memory));
   }
 };
@@ -128,12 +135,13 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const Sharp_options* tags)
 {
   CGAL_precondition(tags == nullptr || scheme.run_sharp); // subdivide_surface() refuses the others first
-  with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Project{mesh, tags != nullptr});
+  with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Project{mesh, tags});
 }
 
 Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
-                                const std::vector<double>& heights)
+                                const std::vector<double>& heights, const Sharp_options* tags)
 {
+  refuse_tags_unless_taken(scheme, tags);
   Surface_result result;
   result.in = counts(mesh);
   check_output_size(scheme, mesh, levels, max_memory);
@@ -143,7 +151,7 @@ Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int
   for(Vertex v : mesh.vertices())
     map[v] = heights.at(k++);
   // linear: the mask follows the mesh before refinement, as `linear` does
-  with_mask(scheme, mesh, Sharp_options(), Displace{mesh, levels, max_memory, map});
+  with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Displace{mesh, levels, max_memory, map, tags});
   mesh.remove_property_map(map);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.out = counts(mesh);

@@ -37,10 +37,13 @@ void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const
 /*
  * refines `mesh` `levels` times carrying `heights` (by vertex, in the mesh's
  * order) with the scheme's stencils, then moves every vertex to its limit
- * position plus its limit height along its unit limit normal
+ * position plus its limit height along its unit limit normal. With `tags`,
+ * the levels refine the sharpness maps of `mesh` with the options of `tags`,
+ * and the limit takes those of the refined mesh.
+ * \throws Input_error when there are tags and the scheme does not take them
  */
 Surface_result displace_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,
-                                const std::vector<double>& heights);
+                                const std::vector<double>& heights, const Sharp_options* tags = nullptr);
 
 } // namespace cgal_subdiv
 

@@ -46,33 +46,15 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         {}};
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
-      const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
-      const auto vertices = mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
-      const auto holes = mesh.add_property_map<Surface::Face_index, bool>(face_hole_name, false).first;
-      const auto np = SD::parameters::number_of_iterations(levels)
-                        .max_memory(max_memory)
-                        .edge_sharpness_map(edges)
-                        .vertex_sharpness_map(vertices)
-                        .crease_method(options.method)
-                        .face_hole_map(holes);
-      if constexpr(std::is_constructible_v<Mask, SD::Border_corners>) {
-        const Mask mask = mask_with_options<Mask>(options);
-        if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
-          SD::subdivide(mesh, mask,
-                        np.boundary_interpolation(options.boundary).triangle_subdivision(options.triangles));
-        else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
-          SD::subdivide(mesh, mask, np.boundary_interpolation(options.boundary));
-      } else {
+      const auto np = tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory);
+      if constexpr(std::is_constructible_v<Mask, SD::Border_corners>)
+        SD::subdivide(mesh, mask_with_options<Mask>(options), np);
+      else {
         // `linear` (the row of the quad mask, whose call picks the split):
-        // the tags move no point, they are carried; no boundary mode moves
-        // a point either (edges and corners is taken as edges, none still
-        // makes the border faces holes)
+        // the tags move no point, they are carried
         static_assert(std::is_same_v<Mask, SD::Linear_quad_mask<Surface>>,
                       "the masks that take tags without a Border_corners are the linear ones");
-        using Boundary = SD::Boundary_interpolation;
-        const Boundary boundary =
-          options.boundary == Boundary::edges_and_corners ? Boundary::edges_only : options.boundary;
-        SD::linear_subdivision(mesh, np.boundary_interpolation(boundary));
+        SD::linear_subdivision(mesh, np);
       }
     };
   return scheme;

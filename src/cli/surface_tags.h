@@ -11,6 +11,7 @@
 #include "mesh_soup.h"
 #include "surface_from_soup.h"
 
+#include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/views/Sharpness.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
@@ -51,6 +52,33 @@ Mask mask_with_options(const Sharp_options& options)
   else {
     (void)corners;
     return Mask();
+  }
+}
+
+/// the named parameters of the tags of `mesh` (its sharpness and hole maps,
+/// added when missing) and of the options of `options` that `Mask` takes:
+/// the one place the command line hands its tags to the library
+/// (refinement, --limit, --displace). The linear masks move no point for a
+/// boundary mode: edges and corners is taken as edges (none still makes the
+/// border faces holes).
+template <class Mask>
+auto tag_parameters(Surface& mesh, const Sharp_options& options)
+{
+  namespace SD = CGAL::Subdiv;
+  const auto tagged =
+    SD::parameters::edge_sharpness_map(mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first)
+      .vertex_sharpness_map(mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first)
+      .face_hole_map(mesh.add_property_map<Surface::Face_index, bool>(face_hole_name, false).first)
+      .crease_method(options.method);
+  if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
+    return tagged.boundary_interpolation(options.boundary).triangle_subdivision(options.triangles);
+  else if constexpr(std::is_constructible_v<Mask, SD::Border_corners>)
+    // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
+    return tagged.boundary_interpolation(options.boundary);
+  else {
+    using Boundary = SD::Boundary_interpolation;
+    return tagged.boundary_interpolation(options.boundary == Boundary::edges_and_corners ? Boundary::edges_only
+                                                                                         : options.boundary);
   }
 }
 

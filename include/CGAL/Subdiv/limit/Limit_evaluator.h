@@ -339,7 +339,11 @@ public:
    *   holds the carried heights of the refined mesh afterwards.
    * A vertex with a null normal (see `limit_normals()`) stays at its limit
    * position. np: `number_of_iterations`, `vertex_point_map`,
-   * `vertex_normal_map` (optional: receives the normals used).
+   * `vertex_normal_map` (optional: receives the normals used); the sharpness
+   * tags of `subdivide()` (`edge_sharpness_map`, `vertex_sharpness_map`,
+   * `crease_method`, `face_hole_map`, `boundary_interpolation`,
+   * `triangle_subdivision`): the levels refine them, and the limit takes
+   * those of the refined mesh, as `project_to_limit()` does.
    */
   template <class PolygonMesh, class Height, class NamedParameters = parameters::Default_named_parameters>
   void displace(PolygonMesh& mesh, const Height& height, const NamedParameters& np = parameters::default_values()) const
@@ -355,7 +359,14 @@ public:
     using Vector = internal::Point_vector<Point>;
     const int levels = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 0);
     constexpr bool callable = std::is_invocable<const Height&, const Point&>::value;
-    const auto level_np = parameters::number_of_iterations(levels).vertex_point_map(vpm);
+    // the levels take the tags of np (and refine them), if there are some:
+    // then np is a chain of the package's parameters
+    const auto level_np = [&]() {
+      if constexpr(internal::has_sharpness_tags<NamedParameters>())
+        return np.number_of_iterations(levels).vertex_point_map(vpm);
+      else
+        return parameters::number_of_iterations(levels).vertex_point_map(vpm).max_memory(internal::max_memory_of(np));
+    }();
     if constexpr(callable) {
       if(levels > 0)
         subdivide(mesh, mask<PolygonMesh, FT>(), level_np);
@@ -364,7 +375,7 @@ public:
       data.vertex_map(height);
       subdivide(mesh, mask<PolygonMesh, FT>(), level_np.carried_data(data));
     }
-    const Evaluation<PolygonMesh, VPM> e(*this, mesh, vpm, "displace");
+    const Evaluation<PolygonMesh, VPM> e(*this, mesh, vpm, "displace", np);
     std::vector<FT> heights(e.limits.size());
     if constexpr(callable) {
       for(std::size_t k = 0; k < heights.size(); ++k)
