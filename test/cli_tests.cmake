@@ -365,6 +365,18 @@ subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}
   FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
 subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
+# butterfly with creases: --sharp-angle 60 makes the 6 edges of the
+# tetrahedron (70.5 degrees) infinitely sharp, so every vertex is a corner and
+# every edge a crease of one edge, whose four-point rule with reflected ends
+# is the midpoint: the refined tetrahedron is the old one, with its 6 edge
+# midpoints; --limit keeps them (an interpolating crease keeps its vertices)
+foreach(limit IN ITEMS "" "--limit")
+  string(REPLACE "-" "" suffix "${limit}")
+  subdiv_cli_test(surface_butterfly_creases${suffix} ARGS surface ${tetra} -o @WORK@/out.off --scheme butterfly
+    --levels 1 --sharp-angle 60 ${limit}
+    OUTPUT @WORK@/out.off VERTICES 10 FACES 16
+    CONTAINS "1 1 1" "1 -1 -1" "-1 1 -1" "-1 -1 1" "1 0 0" "0 1 0" "0 0 1" "0 0 -1" "0 -1 0" "-1 0 0")
+endforeach()
 # --displace with tags: the cube with its 12 edges infinitely sharp is its
 # own limit (surface_limit_with_creases), and heights of 1 push every point
 # out by 1 along its normal: the faces' own at a face centre (a regular

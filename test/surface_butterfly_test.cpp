@@ -425,3 +425,151 @@ TEST(Butterfly_family, larger_shared_meshes_run_two_levels_and_stay_valid)
   for(const std::string name : {"cgal/mesh_with_border.off", "cgal/elephant-with-holes.off", "cgal/elephant.off"})
     expect_two_valid_levels(shared_mesh(name));
 }
+
+// ---- creases (sharpness tags): infinitely sharp edges as borders ----------
+
+namespace {
+
+// a 6 x 6 triangle grid at generic rational heights, with the crease of its
+// row j = 3 from i = 1 to i = 5 (4 infinitely sharp edges, ending at two
+// darts) in the map "e:sharpness"
+EMesh creased_grid(const std::function<FT(int, int)>& height)
+{
+  EMesh mesh = testing_utils::grid<EMesh>(
+    6, 6, [&](int i, int j) { return P(i, j, height(i, j)); }, true);
+  auto sharpness = mesh.add_property_map<EMesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  for(int i = 1; i < 5; ++i) {
+    const auto h =
+      mesh.halfedge(testing_utils::grid_vertex<EMesh>(6, i, 3), testing_utils::grid_vertex<EMesh>(6, i + 1, 3));
+    sharpness[mesh.edge(h)] = FT(10);
+  }
+  return mesh;
+}
+
+FT grid_height(int i, int j)
+{
+  return FT((i * 7 + j * 5) % 11) / FT(8) - FT(j * j) / FT(16);
+}
+
+void refine_creased(EMesh& mesh, int levels = 1)
+{
+  S::subdivide(mesh, S::Butterfly_mask<EMesh>(),
+               S::parameters::number_of_iterations(levels).edge_sharpness_map(
+                 mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first));
+}
+
+} // namespace
+
+// The crease is refined by the four-point curve scheme alone, the polyline
+// continued by point reflection at its ends (End_rule::keep_ends): its new
+// points are that curve's, exactly, in rationals.
+TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends)
+{
+  EMesh mesh = creased_grid(grid_height);
+  std::vector<P> crease;
+  for(int i = 1; i <= 5; ++i)
+    crease.push_back(mesh.point(testing_utils::grid_vertex<EMesh>(6, i, 3)));
+  refine_creased(mesh);
+  const std::vector<P> curve = S::refine_polyline(
+    crease, S::Four_point_scheme<FT>(), S::parameters::number_of_iterations(1).end_rule(S::End_rule::keep_ends));
+  ASSERT_EQ(curve.size(), 9u);
+  const auto sharpness = mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first;
+  for(std::size_t k = 1; k < curve.size(); k += 2) { // the new points, each between two sharp halves
+    std::size_t found = 0;
+    for(auto v : vertices(mesh))
+      if(mesh.point(v) == curve[k]) {
+        ++found;
+        int sharp_halves = 0;
+        for(auto h : CGAL::halfedges_around_target(v, mesh))
+          sharp_halves += sharpness[mesh.edge(h)] == FT(10) ? 1 : 0;
+        EXPECT_EQ(sharp_halves, 2) << "curve point " << k;
+      }
+    EXPECT_EQ(found, 1u) << "curve point " << k;
+  }
+  // without the tags the edge points on the crease are the butterfly's, not the curve's (3 of 4 differ)
+  EMesh untagged = creased_grid(grid_height);
+  S::butterfly_subdivision(untagged);
+  std::size_t on_curve = 0;
+  for(auto v : vertices(untagged))
+    for(std::size_t k = 1; k < curve.size(); k += 2)
+      on_curve += untagged.point(v) == curve[k] ? 1 : 0;
+  EXPECT_LT(on_curve, 2u); // one may agree by chance
+}
+
+// Neither side of a crease reaches across it: moving a vertex next to the
+// crease on one side (y = 4) leaves every new point on the other side and on
+// the crease (y <= 3; the scheme reproduces the planar lattice, so a new
+// point's y is its edge's midpoint's) where it was; without the tags it
+// moves some of them.
+TEST(Butterfly_creases, the_two_sides_do_not_interact)
+{
+  const auto moved_height = [](int i, int j) -> FT { return grid_height(i, j) + (i == 3 && j == 4 ? FT(5) : FT(0)); };
+  const auto differences_below = [](const EMesh& a, const EMesh& b) {
+    std::size_t count = 0;
+    for(auto v : vertices(a)) {
+      EXPECT_EQ(a.point(v).y(), b.point(v).y());
+      if(a.point(v).y() <= 3 && a.point(v) != b.point(v))
+        ++count;
+    }
+    return count;
+  };
+  EMesh a = creased_grid(grid_height), b = creased_grid(moved_height);
+  refine_creased(a);
+  refine_creased(b);
+  EXPECT_EQ(differences_below(a, b), 0u);
+  EMesh c = creased_grid(grid_height), d = creased_grid(moved_height);
+  S::butterfly_subdivision(c);
+  S::butterfly_subdivision(d);
+  EXPECT_GT(differences_below(c, d), 0u);
+}
+
+// Two levels with the tags are one level then another (the children of an
+// infinitely sharp edge are infinitely sharp), and the stencil table with the
+// tags gives the same points, in rationals; tags of 0 change nothing.
+TEST(Butterfly_creases, levels_and_tables_agree)
+{
+  EMesh twice = creased_grid(grid_height), by_levels = twice, coarse = twice;
+  refine_creased(twice, 2);
+  refine_creased(by_levels);
+  refine_creased(by_levels);
+  ASSERT_EQ(num_vertices(twice), num_vertices(by_levels));
+  for(auto v : vertices(twice))
+    ASSERT_EQ(twice.point(v), by_levels.point(v)) << "vertex " << v;
+  const auto sharpness = coarse.property_map<EMesh::Edge_index, FT>("e:sharpness").first;
+  const S::Stencil_table<FT> table = S::make_stencil_table(
+    coarse, S::Butterfly_mask<EMesh>(), S::parameters::number_of_iterations(2).edge_sharpness_map(sharpness));
+  std::vector<P> from_table;
+  table.apply(std::vector<P>(coarse.points().begin(), coarse.points().end()), from_table);
+  ASSERT_EQ(from_table.size(), num_vertices(twice));
+  for(auto v : vertices(twice))
+    ASSERT_EQ(from_table[v.idx()], twice.point(v)) << "vertex " << v;
+
+  EMesh zero_tags = testing_utils::grid<EMesh>(
+    6, 6, [](int i, int j) { return P(i, j, grid_height(i, j)); }, true);
+  EMesh untagged = zero_tags;
+  auto zeros = zero_tags.add_property_map<EMesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  S::subdivide(zero_tags, S::Butterfly_mask<EMesh>(), S::parameters::edge_sharpness_map(zeros));
+  S::butterfly_subdivision(untagged);
+  for(auto v : vertices(untagged))
+    ASSERT_EQ(zero_tags.point(v), untagged.point(v)) << "vertex " << v;
+}
+
+// A semi-sharp value is refused, naming the edge, and the mesh and its tags
+// are left as they were.
+TEST(Butterfly_creases, semi_sharp_is_refused)
+{
+  EMesh mesh = creased_grid(grid_height);
+  auto sharpness = mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first;
+  sharpness[EMesh::Edge_index(7)] = FT(1) / FT(2);
+  const EMesh before = mesh;
+  try {
+    refine_creased(mesh);
+    ADD_FAILURE() << "a semi-sharp edge was accepted";
+  } catch(const S::Bad_input& e) {
+    EXPECT_NE(std::string(e.what()).find("butterfly: edge 7 is semi-sharp"), std::string::npos) << e.what();
+  }
+  ASSERT_EQ(num_vertices(mesh), num_vertices(before));
+  for(auto v : vertices(mesh))
+    ASSERT_EQ(mesh.point(v), before.point(v));
+  EXPECT_EQ(sharpness[EMesh::Edge_index(7)], FT(1) / FT(2));
+}

@@ -47,15 +47,10 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto np = tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory);
-      if constexpr(std::is_constructible_v<Mask, SD::Border_corners>)
-        SD::subdivide(mesh, mask_with_options<Mask>(options), np);
-      else {
-        // `linear` (the row of the quad mask, whose call picks the split):
-        // the tags move no point, they are carried
-        static_assert(std::is_same_v<Mask, SD::Linear_quad_mask<Surface>>,
-                      "the masks that take tags without a Border_corners are the linear ones");
+      if constexpr(is_linear_mask<Mask>) // the row of the quad mask, whose call picks the split
         SD::linear_subdivision(mesh, np);
-      }
+      else
+        SD::subdivide(mesh, mask_with_options<Mask>(options), np);
     };
   return scheme;
 }

@@ -11,6 +11,8 @@
 #include "mesh_soup.h"
 #include "surface_from_soup.h"
 
+#include <CGAL/Subdiv/masks/Linear_quad_mask.h>
+#include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/views/Sharpness.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -55,6 +57,12 @@ Mask mask_with_options(const Sharp_options& options)
   }
 }
 
+/// whether `Mask` is one of the linear masks (`--scheme linear`), which take
+/// the tags and move no point for them
+template <class Mask>
+constexpr bool is_linear_mask = std::is_same_v<Mask, CGAL::Subdiv::Linear_quad_mask<Surface>> ||
+                                std::is_same_v<Mask, CGAL::Subdiv::Linear_triangle_mask<Surface>>;
+
 /// the named parameters of the tags of `mesh` (its sharpness and hole maps,
 /// added when missing) and of the options of `options` that `Mask` takes:
 /// the one place the command line hands its tags to the library
@@ -72,14 +80,12 @@ auto tag_parameters(Surface& mesh, const Sharp_options& options)
       .crease_method(options.method);
   if constexpr(SD::internal::Has_triangle_subdivision<Mask>::value)
     return tagged.boundary_interpolation(options.boundary).triangle_subdivision(options.triangles);
-  else if constexpr(std::is_constructible_v<Mask, SD::Border_corners>)
-    // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
-    return tagged.boundary_interpolation(options.boundary);
-  else {
+  else if constexpr(is_linear_mask<Mask>) {
     using Boundary = SD::Boundary_interpolation;
     return tagged.boundary_interpolation(options.boundary == Boundary::edges_and_corners ? Boundary::edges_only
                                                                                          : options.boundary);
-  }
+  } else // OpenSubdiv's triangle rule is one of Catmull-Clark: the other schemes ignore it, as OpenSubdiv does
+    return tagged.boundary_interpolation(options.boundary);
 }
 
 /*

@@ -214,7 +214,8 @@ struct Crease_curve_scheme
  * vertex on this level: a corner's limit is the vertex itself; a crease's is
  * the limit of the curve rule along its two sharp edges (the left fixed
  * vector of the curve's local matrix, over the two crease neighbours and the
- * vertex: the cubic B-spline's 1/6, 2/3, 1/6); neither has tangent rows (the
+ * vertex: the cubic B-spline's 1/6, 2/3, 1/6; an interpolating rule keeps the
+ * vertex); neither has tangent rows (the
  * normal there is the faces'). Fills those rows of `rows` and returns the
  * other vertices (ordinals), whose rows are the analysis': the children of a
  * smooth vertex's ring follow smooth rules only, whatever the tags around
@@ -224,11 +225,17 @@ template <class FT, class Mesh>
 std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_level<Mesh, FT>& level,
                                           const Border_curve_rule<FT>& curve)
 {
-  const Crease_curve_scheme<FT> scheme{curve};
-  const std::pair<int, int> window = invariant_window(scheme);
-  const std::vector<FT> crease = normalised_left_fixed_vector(local_subdivision_matrix(scheme));
-  CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
-  (void)window;
+  // an interpolating curve rule (the butterflies' four-point) keeps its
+  // vertices: a crease's limit is the vertex too
+  const bool interpolating = curve.even().size() == 1 && curve.even()[0].first == 0 && curve.even()[0].second == FT(1);
+  std::vector<FT> crease{FT(0), FT(1), FT(0)};
+  if(!interpolating) {
+    const Crease_curve_scheme<FT> scheme{curve};
+    const std::pair<int, int> window = invariant_window(scheme);
+    crease = normalised_left_fixed_vector(local_subdivision_matrix(scheme));
+    CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
+    (void)window;
+  }
   const Mesh_numbering<Mesh> number(mesh);
   std::vector<std::size_t> smooth;
   for(std::size_t k = 0; k < rows.position.size(); ++k) {
@@ -237,7 +244,7 @@ std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh
       smooth.push_back(k);
       continue;
     }
-    if(v.rule() == Vertex_rule::corner) {
+    if(v.rule() == Vertex_rule::corner || interpolating) {
       rows.position[k].add(static_cast<std::uint32_t>(k), FT(1));
     } else {
       rows.position[k].add(static_cast<std::uint32_t>(number(target(v.crease_out(0), mesh))), crease[0]);

@@ -74,6 +74,34 @@ public:
     add_along(m_even, mesh, g, acc);
   }
 
+  /// the new vertex on the edge (a, b) of a polyline of the mesh that is not
+  /// its border (a crease): the odd rule, offset 0 at a and 1 at b; `before`
+  /// is the polyline's vertex before a and `after` the one after b, or
+  /// `none` where the polyline ends at a or b: it is then continued by point
+  /// reflection (2a - b before a, 2b - a after b), as `End_rule::keep_ends`
+  /// continues an open curve. The rule must reach no further than one
+  /// vertex beyond each end (offsets -1 to 2: the four-point rule).
+  template <class Vertex, class Accumulator>
+  void polyline_edge_point(Vertex before, Vertex a, Vertex b, Vertex after, Vertex none, Accumulator& acc) const
+  {
+    for(const auto& term : m_odd) {
+      const FT& w = term.second;
+      CGAL_precondition(term.first >= -1 && term.first <= 2);
+      if(term.first == 0 || term.first == 1) {
+        acc.add(term.first == 0 ? a : b, w);
+        continue;
+      }
+      const Vertex beyond = term.first < 0 ? before : after;
+      if(beyond != none) {
+        acc.add(beyond, w);
+        continue;
+      }
+      const Vertex end = term.first < 0 ? a : b, other = term.first < 0 ? b : a;
+      acc.add(end, FT(2) * w); // 2 end - other
+      acc.add(other, -w);
+    }
+  }
+
   /// the even and odd masks, by increasing offset
   const std::vector<std::pair<int, FT>>& even() const { return m_even; }
   const std::vector<std::pair<int, FT>>& odd() const { return m_odd; }

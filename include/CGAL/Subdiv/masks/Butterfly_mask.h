@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/butterfly_weights.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -48,12 +49,26 @@ namespace Subdiv {
  *   the rule is affine invariant and reproduces planes; it does not
  *   reproduce cubics.
  *
+ * Creases (`edge_sharpness_map`, `vertex_sharpness_map` of `subdivide()`):
+ * infinitely sharp values only (0, or 10 and above; a semi-sharp value is
+ * refused, naming the edge or the vertex). An infinitely sharp edge is
+ * refined as a border edge on both of its sides: its edge point is the
+ * four-point rule along the polyline of sharp edges, which goes on through a
+ * vertex with two sharp edges and ends at a corner (three or more, or a
+ * sharp vertex) or at the end of a dart's edge, where it is continued by
+ * point reflection as `End_rule::keep_ends` continues an open curve; the
+ * stencil of an interior edge does not reach across a sharp edge (the
+ * missing vertices are reflected, as at the border). The border is a crease
+ * that ends at the corners. Old vertices keep their positions, tags or not.
+ *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (made by `subdivide()`)
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Butterfly_mask
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Butterfly_mask : public With_sharp_rules<Butterfly_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -66,15 +81,19 @@ public:
   /// rule of the border converges. w = 0 is piecewise-linear interpolation
   /// (edge midpoints); w = 1/16 is the value of the paper.
   explicit Butterfly_mask(const FT& w = FT(1) / FT(16))
-    : m_w(checked(w)), m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w), m_border(Four_point_scheme<FT>(w))
+    : With_sharp_rules<Butterfly_mask, Mesh, FT, Tagged>(Four_point_scheme<FT>(checked(w))), m_w(w),
+      m_half(FT(1) / FT(2)), m_wing(FT(2) * w), m_outer(-w)
   {}
 
   /// the same rules, with the same tension, for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Butterfly_mask<OtherMesh, OtherFT> rebind() const
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Butterfly_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Butterfly_mask<OtherMesh, OtherFT>(internal::convert_weight<OtherFT>(m_w));
+    return Butterfly_mask<OtherMesh, OtherFT, OtherTagged>(internal::convert_weight<OtherFT>(m_w));
   }
+
+  /// the sharpness tags it takes are infinitely sharp ones
+  static constexpr bool takes_semi_sharp_tags = false;
 
   std::string name() const { return "butterfly"; }
   bool is_interpolating() const { return true; }
@@ -89,8 +108,18 @@ public:
   template <class Accumulator>
   void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
+    if constexpr(Tagged) { // creases: sharp edges as borders, to both sides
+      if(e.sharp()) {      // a border edge along its loop, as without tags
+        const auto h = e.on_border() ? e.border_halfedge() : e.halfedge();
+        internal::crease_edge_point(*this->sharp_level(), this->crease_curve(), e.mesh(), h, acc);
+        return;
+      }
+      const internal::Sharp_cuts<internal::Sharp_level<Mesh, FT>> cuts{this->sharp_level()};
+      internal::butterfly_stencil(e.mesh(), e.halfedge(), m_half, m_wing, m_outer, acc, cuts);
+      return;
+    }
     if(e.on_border()) { // border edge: four-point rule, along the border loop
-      m_border.edge_point(e.mesh(), e.border_halfedge(), acc);
+      this->crease_curve().edge_point(e.mesh(), e.border_halfedge(), acc);
       return;
     }
     // interior edge: eight-point stencil, missing outer vertices reflected
@@ -108,7 +137,6 @@ private:
   FT m_half;
   FT m_wing;
   FT m_outer;
-  Border_curve_rule<FT> m_border;
 };
 
 } // namespace Subdiv

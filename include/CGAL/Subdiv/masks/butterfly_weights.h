@@ -3,7 +3,9 @@
 #ifndef CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
 #define CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
 
+#include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/masks/cosines.h>
+#include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
@@ -32,18 +34,30 @@ namespace internal {
  * b, e4 across (d, b) from a.
  */
 
+// whether the edge of halfedge x (of a face) is on the border: the stencils
+// do not reach across it
+struct Border_cuts
+{
+  template <class Mesh>
+  bool operator()(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor x) const
+  {
+    return CGAL::is_border(opposite(x, mesh), mesh);
+  }
+};
+
 // The outer vertex across the edge of halfedge x from the face of x, with
-// `weight`. Where that face is missing (x's edge is on the border) the
-// outer vertex is replaced by the reflection of the face's third vertex r
-// through the midpoint of x's edge, source(x) + target(x) - r: the vertex
-// a regular triangle grid would have there. The weights still sum to `weight`,
-// so the stencil stays affine invariant.
-template <class Mesh, class FT, class Accumulator>
+// `weight`. Where the stencil does not reach across that edge (`cut(mesh,
+// x)`: it is on the border, or an infinitely sharp crease) the outer vertex
+// is replaced by the reflection of the face's third vertex r through the
+// midpoint of x's edge, source(x) + target(x) - r: the vertex a regular
+// triangle grid would have there. The weights still sum to `weight`, so the
+// stencil stays affine invariant.
+template <class Mesh, class FT, class Accumulator, class Cut = Border_cuts>
 void add_outer_vertex(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor x, const FT& weight,
-                      Accumulator& acc)
+                      Accumulator& acc, const Cut& cut = Cut())
 {
   const auto across = opposite(x, mesh);
-  if(!CGAL::is_border(across, mesh)) {
+  if(!cut(mesh, x)) {
     acc.add(target(next(across, mesh), mesh), weight);
     return;
   }
@@ -54,17 +68,55 @@ void add_outer_vertex(const Mesh& mesh, typename boost::graph_traits<Mesh>::half
 }
 
 // The butterfly stencil of the interior edge of h: `end` for a and b,
-// `wing` for c and d, `outer` for e1..e4 (missing ones reflected).
-template <class Mesh, class FT, class Accumulator>
+// `wing` for c and d, `outer` for e1..e4 (reflected where `cut` says the
+// stencil does not reach across).
+template <class Mesh, class FT, class Accumulator, class Cut = Border_cuts>
 void butterfly_stencil(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor h, const FT& end,
-                       const FT& wing, const FT& outer, Accumulator& acc)
+                       const FT& wing, const FT& outer, Accumulator& acc, const Cut& cut = Cut())
 {
   for(const auto g : {h, opposite(h, mesh)}) {
     acc.add(target(g, mesh), end);
     acc.add(target(next(g, mesh), mesh), wing);
-    add_outer_vertex(mesh, next(g, mesh), outer, acc);
-    add_outer_vertex(mesh, prev(g, mesh), outer, acc);
+    add_outer_vertex(mesh, next(g, mesh), outer, acc, cut);
+    add_outer_vertex(mesh, prev(g, mesh), outer, acc, cut);
   }
+}
+
+// whether the edge of halfedge x (of a face) is on the border or sharp on
+// `level` (the sharpness tags of a level): the stencils of the butterflies
+// do not reach across an infinitely sharp crease, as across a border
+template <class Level>
+struct Sharp_cuts
+{
+  const Level* level;
+  template <class Mesh>
+  bool operator()(const Mesh&, typename boost::graph_traits<Mesh>::halfedge_descriptor x) const
+  {
+    return level->edge_view(x).sharp();
+  }
+};
+
+// The new vertex on the sharp edge of h under the tags of `level`: the curve
+// rule `curve` along the polyline of sharp edges (a crease, or the border),
+// which goes on through a vertex with the crease rule (two sharp edges) and
+// ends at any other (a corner, or the end of a dart's edge), where it is
+// continued by point reflection (`Border_curve_rule::polyline_edge_point`).
+template <class Level, class Mesh, class FT, class Accumulator>
+void crease_edge_point(const Level& level, const Border_curve_rule<FT>& curve, const Mesh& mesh,
+                       typename boost::graph_traits<Mesh>::halfedge_descriptor h, Accumulator& acc)
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  const vertex_descriptor none = boost::graph_traits<Mesh>::null_vertex();
+  // the polyline's vertex beyond v, away from the edge of h
+  const auto beyond = [&](vertex_descriptor v) {
+    const Vertex_view<Mesh> view = level.vertex_view(v);
+    if(view.rule() != Vertex_rule::crease)
+      return none;
+    const auto out = edge(view.crease_out(0), mesh) == edge(h, mesh) ? view.crease_out(1) : view.crease_out(0);
+    return target(out, mesh);
+  };
+  const vertex_descriptor a = source(h, mesh), b = target(h, mesh);
+  curve.polyline_edge_point(beyond(a), a, b, beyond(b), none, acc);
 }
 
 } // namespace internal

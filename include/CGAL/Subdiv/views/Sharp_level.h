@@ -50,19 +50,25 @@ public:
 
   /// throws `Bad_input` naming the first edge or vertex (by its ordinal)
   /// whose `edge_sharpness(e)` or `vertex_sharpness(v)` (callables) is
-  /// negative or NaN (`scheme` names the caller in the message): a user's
-  /// tags are checked by this before anything is changed
+  /// negative or NaN, or semi-sharp (above 0, below 10) with
+  /// `infinitely_sharp_only` (`scheme` names the caller in the message): a
+  /// user's tags are checked by this before anything is changed
   template <class EdgeSharpness, class VertexSharpness>
   static void check_tags(const Mesh& mesh, const EdgeSharpness& edge_sharpness, const VertexSharpness& vertex_sharpness,
-                         const std::string& scheme)
+                         const std::string& scheme, bool infinitely_sharp_only = false)
   {
     const Mesh_numbering<Mesh> number(mesh);
+    const auto check = [&](const S& s, const std::string& what) {
+      require(s >= S(0), scheme + ": the sharpness of " + what + " is negative or NaN");
+      require(!infinitely_sharp_only || !Rules::is_semi_sharp(s),
+              scheme + ": " + what +
+                " is semi-sharp (above 0, below 10): this scheme takes infinitely sharp creases and corners "
+                "only (0, or 10 and above); semi-sharp values are for Loop, Catmull-Clark and bilinear");
+    };
     for(std::size_t e = 0; e < num_edges(mesh); ++e)
-      require(edge_sharpness(number.edge(e)) >= 0,
-              scheme + ": the sharpness of edge " + std::to_string(e) + " is negative or NaN");
+      check(S(edge_sharpness(number.edge(e))), "edge " + std::to_string(e));
     for(std::size_t i = 0; i < num_vertices(mesh); ++i)
-      require(vertex_sharpness(number.vertex(i)) >= 0,
-              scheme + ": the sharpness of vertex " + std::to_string(i) + " is negative or NaN");
+      check(S(vertex_sharpness(number.vertex(i))), "vertex " + std::to_string(i));
   }
 
   /// reads `edge_sharpness(e)` and `vertex_sharpness(v)` (callables, whose

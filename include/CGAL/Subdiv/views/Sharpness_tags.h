@@ -87,7 +87,7 @@ constexpr bool has_sharpness_tags()
 struct No_sharpness_tags
 {
   template <class Mesh>
-  void check(const Mesh&, const std::string&) const
+  void check(const Mesh&, const std::string&, bool = false) const
   {}
   /// `use(mask)`
   template <class Mesh, class Mask, class Use>
@@ -117,11 +117,12 @@ public:
     : m_edges(edges), m_vertices(vertices), m_method(method)
   {}
 
-  /// refuses a negative or NaN sharpness (`Sharp_level::check_tags`): called
-  /// before the mesh or a map is changed
-  void check(const Mesh& mesh, const std::string& scheme) const
+  /// refuses a negative or NaN sharpness, and a semi-sharp one with
+  /// `infinitely_sharp_only` (`Sharp_level::check_tags`): called before the
+  /// mesh or a map is changed
+  void check(const Mesh& mesh, const std::string& scheme, bool infinitely_sharp_only = false) const
   {
-    Sharp_level<Mesh, FT>::check_tags(mesh, edge_reader(), vertex_reader(), scheme);
+    Sharp_level<Mesh, FT>::check_tags(mesh, edge_reader(), vertex_reader(), scheme, infinitely_sharp_only);
   }
 
   /// the tags of `mesh`'s level, for a mask with border corners `corners`

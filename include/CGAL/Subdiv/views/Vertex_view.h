@@ -390,6 +390,16 @@ struct Takes_sharpness_tags<Mask, std::void_t<decltype(std::declval<const Mask&>
   : std::true_type
 {};
 
+/// whether the mask takes semi-sharp tags (Loop, Catmull-Clark, the linear
+/// masks), or infinitely sharp ones only (its `takes_semi_sharp_tags` is
+/// false: the butterflies)
+template <class Mask, class = void>
+struct Takes_semi_sharp_tags : std::true_type
+{};
+template <class Mask>
+struct Takes_semi_sharp_tags<Mask, std::enable_if_t<!Mask::takes_semi_sharp_tags>> : std::false_type
+{};
+
 /// whether the mask is a tagged copy (`With_sharp_rules`): its views come
 /// from the tags of its level
 template <class Mask, class = void>
