@@ -370,13 +370,23 @@ subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not ta
 # every edge a crease of one edge, whose four-point rule with reflected ends
 # is the midpoint: the refined tetrahedron is the old one, with its 6 edge
 # midpoints; --limit keeps them (an interpolating crease keeps its vertices)
-foreach(limit IN ITEMS "" "--limit")
-  string(REPLACE "-" "" suffix "${limit}")
-  subdiv_cli_test(surface_butterfly_creases${suffix} ARGS surface ${tetra} -o @WORK@/out.off --scheme butterfly
-    --levels 1 --sharp-angle 60 ${limit}
-    OUTPUT @WORK@/out.off VERTICES 10 FACES 16
-    CONTAINS "1 1 1" "1 -1 -1" "-1 1 -1" "-1 -1 1" "1 0 0" "0 1 0" "0 0 1" "0 0 -1" "0 -1 0" "-1 0 0")
+foreach(scheme IN ITEMS butterfly modified-butterfly)
+  foreach(limit IN ITEMS "" "--limit")
+    string(REPLACE "-" "_" name "${scheme}${limit}")
+    subdiv_cli_test(surface_creases_${name} ARGS surface ${tetra} -o @WORK@/out.off --scheme ${scheme}
+      --levels 1 --sharp-angle 60 ${limit}
+      OUTPUT @WORK@/out.off VERTICES 10 FACES 16
+      CONTAINS "1 1 1" "1 -1 -1" "-1 1 -1" "-1 -1 1" "1 0 0" "0 1 0" "0 0 1" "0 0 -1" "0 -1 0" "-1 0 0")
+  endforeach()
 endforeach()
+# OpenSubdiv's icosahedron with infinitely sharp creases and corners, refined
+# by the modified butterfly, writes the children's tags; its semi-sharp twin is
+# refused by the butterflies, naming the edge
+subdiv_cli_test(surface_modified_butterfly_infsharp ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_infsharp.obj
+  -o @WORK@/out.obj --scheme modified-butterfly --levels 2
+  OUTPUT @WORK@/out.obj VERTICES 648 FACES 1280 FILE @WORK@/out.obj FILE_REGEX "\nt crease 2/1/0 [0-9]+ [0-9]+ 10\n.*\nt corner 1/1/0 [0-9]+ 10\n")
+subdiv_surface_error(surface_butterfly_semisharp 1 "butterfly: edge [0-9]+ is semi-sharp \\(above 0, below 10\\): this scheme takes infinitely sharp creases and corners only"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_semisharp.obj ${mesh_out} --scheme butterfly --levels 1)
 # --displace with tags: the cube with its 12 edges infinitely sharp is its
 # own limit (surface_limit_with_creases), and heights of 1 push every point
 # out by 1 along its normal: the faces' own at a face centre (a regular

@@ -451,25 +451,34 @@ FT grid_height(int i, int j)
   return FT((i * 7 + j * 5) % 11) / FT(8) - FT(j * j) / FT(16);
 }
 
+template <class Mask>
 void refine_creased(EMesh& mesh, int levels = 1)
 {
-  S::subdivide(mesh, S::Butterfly_mask<EMesh>(),
+  S::subdivide(mesh, Mask(),
                S::parameters::number_of_iterations(levels).edge_sharpness_map(
                  mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first));
 }
 
 } // namespace
 
+// both butterflies (the modified one with its four-point rule of 1/16, the
+// butterfly's default tension)
+template <class Mask>
+class Butterfly_creases : public ::testing::Test
+{};
+using Crease_masks = ::testing::Types<S::Butterfly_mask<EMesh>, S::Modified_butterfly_mask<EMesh>>;
+TYPED_TEST_SUITE(Butterfly_creases, Crease_masks);
+
 // The crease is refined by the four-point curve scheme alone, the polyline
 // continued by point reflection at its ends (End_rule::keep_ends): its new
 // points are that curve's, exactly, in rationals.
-TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends)
+TYPED_TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends)
 {
   EMesh mesh = creased_grid(grid_height);
   std::vector<P> crease;
   for(int i = 1; i <= 5; ++i)
     crease.push_back(mesh.point(testing_utils::grid_vertex<EMesh>(6, i, 3)));
-  refine_creased(mesh);
+  refine_creased<TypeParam>(mesh);
   const std::vector<P> curve = S::refine_polyline(
     crease, S::Four_point_scheme<FT>(), S::parameters::number_of_iterations(1).end_rule(S::End_rule::keep_ends));
   ASSERT_EQ(curve.size(), 9u);
@@ -488,7 +497,7 @@ TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends)
   }
   // without the tags the edge points on the crease are the butterfly's, not the curve's (3 of 4 differ)
   EMesh untagged = creased_grid(grid_height);
-  S::butterfly_subdivision(untagged);
+  S::subdivide(untagged, TypeParam());
   std::size_t on_curve = 0;
   for(auto v : vertices(untagged))
     for(std::size_t k = 1; k < curve.size(); k += 2)
@@ -501,7 +510,7 @@ TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends)
 // the crease (y <= 3; the scheme reproduces the planar lattice, so a new
 // point's y is its edge's midpoint's) where it was; without the tags it
 // moves some of them.
-TEST(Butterfly_creases, the_two_sides_do_not_interact)
+TYPED_TEST(Butterfly_creases, the_two_sides_do_not_interact)
 {
   const auto moved_height = [](int i, int j) -> FT { return grid_height(i, j) + (i == 3 && j == 4 ? FT(5) : FT(0)); };
   const auto differences_below = [](const EMesh& a, const EMesh& b) {
@@ -514,30 +523,30 @@ TEST(Butterfly_creases, the_two_sides_do_not_interact)
     return count;
   };
   EMesh a = creased_grid(grid_height), b = creased_grid(moved_height);
-  refine_creased(a);
-  refine_creased(b);
+  refine_creased<TypeParam>(a);
+  refine_creased<TypeParam>(b);
   EXPECT_EQ(differences_below(a, b), 0u);
   EMesh c = creased_grid(grid_height), d = creased_grid(moved_height);
-  S::butterfly_subdivision(c);
-  S::butterfly_subdivision(d);
+  S::subdivide(c, TypeParam());
+  S::subdivide(d, TypeParam());
   EXPECT_GT(differences_below(c, d), 0u);
 }
 
 // Two levels with the tags are one level then another (the children of an
 // infinitely sharp edge are infinitely sharp), and the stencil table with the
 // tags gives the same points, in rationals; tags of 0 change nothing.
-TEST(Butterfly_creases, levels_and_tables_agree)
+TYPED_TEST(Butterfly_creases, levels_and_tables_agree)
 {
   EMesh twice = creased_grid(grid_height), by_levels = twice, coarse = twice;
-  refine_creased(twice, 2);
-  refine_creased(by_levels);
-  refine_creased(by_levels);
+  refine_creased<TypeParam>(twice, 2);
+  refine_creased<TypeParam>(by_levels);
+  refine_creased<TypeParam>(by_levels);
   ASSERT_EQ(num_vertices(twice), num_vertices(by_levels));
   for(auto v : vertices(twice))
     ASSERT_EQ(twice.point(v), by_levels.point(v)) << "vertex " << v;
   const auto sharpness = coarse.property_map<EMesh::Edge_index, FT>("e:sharpness").first;
-  const S::Stencil_table<FT> table = S::make_stencil_table(
-    coarse, S::Butterfly_mask<EMesh>(), S::parameters::number_of_iterations(2).edge_sharpness_map(sharpness));
+  const S::Stencil_table<FT> table =
+    S::make_stencil_table(coarse, TypeParam(), S::parameters::number_of_iterations(2).edge_sharpness_map(sharpness));
   std::vector<P> from_table;
   table.apply(std::vector<P>(coarse.points().begin(), coarse.points().end()), from_table);
   ASSERT_EQ(from_table.size(), num_vertices(twice));
@@ -548,25 +557,25 @@ TEST(Butterfly_creases, levels_and_tables_agree)
     6, 6, [](int i, int j) { return P(i, j, grid_height(i, j)); }, true);
   EMesh untagged = zero_tags;
   auto zeros = zero_tags.add_property_map<EMesh::Edge_index, FT>("e:sharpness", FT(0)).first;
-  S::subdivide(zero_tags, S::Butterfly_mask<EMesh>(), S::parameters::edge_sharpness_map(zeros));
-  S::butterfly_subdivision(untagged);
+  S::subdivide(zero_tags, TypeParam(), S::parameters::edge_sharpness_map(zeros));
+  S::subdivide(untagged, TypeParam());
   for(auto v : vertices(untagged))
     ASSERT_EQ(zero_tags.point(v), untagged.point(v)) << "vertex " << v;
 }
 
 // A semi-sharp value is refused, naming the edge, and the mesh and its tags
 // are left as they were.
-TEST(Butterfly_creases, semi_sharp_is_refused)
+TYPED_TEST(Butterfly_creases, semi_sharp_is_refused)
 {
   EMesh mesh = creased_grid(grid_height);
   auto sharpness = mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first;
   sharpness[EMesh::Edge_index(7)] = FT(1) / FT(2);
   const EMesh before = mesh;
   try {
-    refine_creased(mesh);
+    refine_creased<TypeParam>(mesh);
     ADD_FAILURE() << "a semi-sharp edge was accepted";
   } catch(const S::Bad_input& e) {
-    EXPECT_NE(std::string(e.what()).find("butterfly: edge 7 is semi-sharp"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(TypeParam().name() + ": edge 7 is semi-sharp"), std::string::npos) << e.what();
   }
   ASSERT_EQ(num_vertices(mesh), num_vertices(before));
   for(auto v : vertices(mesh))

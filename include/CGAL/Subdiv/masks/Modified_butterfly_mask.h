@@ -7,6 +7,7 @@
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/butterfly_weights.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -53,6 +54,13 @@ namespace Subdiv {
  * These are the rules OpenMesh's `ModifiedButterFlyT` applies, so results on
  * meshes with borders agree with it as well.
  *
+ * Creases (`edge_sharpness_map`, `vertex_sharpness_map` of `subdivide()`),
+ * infinitely sharp values only, as `Butterfly_mask` takes them: a sharp edge
+ * gets the four-point rule (1/16) along its polyline of sharp edges,
+ * continued by point reflection where it ends, and an end with a sharp edge
+ * (a crease, dart or corner vertex) counts as a border end in the rules
+ * above, so that no stencil reaches across a crease.
+ *
  * Exactness: the weights are rational, and so exact in an exact kernel, at
  * valences 3, 4 and 6; other valences use the nearest double of each cosine
  * (see `Modified_butterfly_weights`), with the end's own weight taken as
@@ -60,10 +68,12 @@ namespace Subdiv {
  *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (made by `subdivide()`)
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Modified_butterfly_mask
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Modified_butterfly_mask : public With_sharp_rules<Modified_butterfly_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -78,9 +88,9 @@ public:
   /// accepts (in it the wing weight 1/8 + 2w is >= 0 and the outer weight
   /// -1/16 - w is <= 0, as in the butterfly); it is not a smoothness bound.
   explicit Modified_butterfly_mask(const FT& w = FT(0))
-    : m_w(w), m_half(FT(1) / FT(2)), m_end(FT(1) / FT(2) - w), m_wing(FT(1) / FT(8) + FT(2) * w),
-      m_outer(FT(-1) / FT(16) - w), m_plain_wing(FT(1) / FT(8)), m_plain_outer(FT(-1) / FT(16)),
-      m_border(Four_point_scheme<FT>(FT(1) / FT(16)))
+    : With_sharp_rules<Modified_butterfly_mask, Mesh, FT, Tagged>(Four_point_scheme<FT>(FT(1) / FT(16))), m_w(w),
+      m_half(FT(1) / FT(2)), m_end(FT(1) / FT(2) - w), m_wing(FT(1) / FT(8) + FT(2) * w), m_outer(FT(-1) / FT(16) - w),
+      m_plain_wing(FT(1) / FT(8)), m_plain_outer(FT(-1) / FT(16))
   {
     internal::require(FT(-1) / FT(16) <= w && w <= FT(1) / FT(16),
                       "modified butterfly parameter w must satisfy -1/16 <= w <= 1/16");
@@ -91,11 +101,14 @@ public:
   }
 
   /// the same rules, with the same parameter, for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Modified_butterfly_mask<OtherMesh, OtherFT> rebind() const
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Modified_butterfly_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Modified_butterfly_mask<OtherMesh, OtherFT>(internal::convert_weight<OtherFT>(m_w));
+    return Modified_butterfly_mask<OtherMesh, OtherFT, OtherTagged>(internal::convert_weight<OtherFT>(m_w));
   }
+
+  /// the sharpness tags it takes are infinitely sharp ones
+  static constexpr bool takes_semi_sharp_tags = false;
 
   std::string name() const { return "modified butterfly"; }
   bool is_interpolating() const { return true; }
@@ -114,14 +127,44 @@ public:
   void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
     const Mesh& mesh = e.mesh();
-    if(e.on_border()) { // border edge: four-point rule, along the border loop
-      m_border.edge_point(mesh, e.border_halfedge(), acc);
-      return;
+    if constexpr(Tagged) { // creases: sharp edges as borders, to both sides
+      const internal::Sharp_level<Mesh, FT>& level = *this->sharp_level();
+      if(e.sharp()) { // a border edge along its loop, as without tags
+        internal::crease_edge_point(level, this->crease_curve(), mesh,
+                                    e.on_border() ? e.border_halfedge() : e.halfedge(), acc);
+        return;
+      }
+      const Vertex_view<Mesh> a = level.vertex_view(source(e.halfedge(), mesh)),
+                              b = level.vertex_view(target(e.halfedge(), mesh));
+      // an end with a sharp edge counts as a border end
+      interior_edge_point(mesh, e.halfedge(), a, a.rule() == Vertex_rule::smooth && usable(a), b,
+                          b.rule() == Vertex_rule::smooth && usable(b),
+                          internal::Sharp_cuts<internal::Sharp_level<Mesh, FT>>{&level}, acc);
+    } else {
+      if(e.on_border()) { // border edge: four-point rule, along the border loop
+        this->crease_curve().edge_point(mesh, e.border_halfedge(), acc);
+        return;
+      }
+      const Vertex_view<Mesh> a = e.end(0), b = e.end(1);
+      interior_edge_point(mesh, e.halfedge(), a, usable(a), b, usable(b), internal::Border_cuts(), acc);
     }
-    const halfedge_descriptor h = e.halfedge();
+  }
+
+private:
+  static constexpr int max_cached_valence = 32;
+
+  // whether the stencils around an end can use its ring: an interior vertex
+  // of valence 3 or more (a degenerate one counts as a border vertex)
+  static bool usable(const Vertex_view<Mesh>& v) { return !v.on_border() && v.valence() >= 3; }
+
+  // the new vertex on the interior edge of h from a = source(h) to b =
+  // target(h), whose ring stencils are usable or not; the eight-point
+  // stencil does not reach across the edges where `cut` says so
+  template <class Cut, class Accumulator>
+  void interior_edge_point(const Mesh& mesh, halfedge_descriptor h, const Vertex_view<Mesh>& a, bool a_usable,
+                           const Vertex_view<Mesh>& b, bool b_usable, const Cut& cut, Accumulator& acc) const
+  {
     const halfedge_descriptor g = opposite(h, mesh);
-    const Vertex_view<Mesh> a = e.end(0), b = e.end(1);
-    const bool a_usable = !a.on_border() && a.valence() >= 3, b_usable = !b.on_border() && b.valence() >= 3;
     if(a_usable && b_usable) {
       if(a.valence() == 6 && b.valence() == 6) { // regular: ten-point stencil
         internal::butterfly_stencil(mesh, h, m_end, m_wing, m_outer, acc);
@@ -142,12 +185,9 @@ public:
     } else if(b_usable && b.valence() != 6) {
       ring_stencil(mesh, g, b.valence(), false, acc);
     } else { // a regular end next to the border, or both on it: eight-point butterfly, reflected
-      internal::butterfly_stencil(mesh, h, m_half, m_plain_wing, m_plain_outer, acc);
+      internal::butterfly_stencil(mesh, h, m_half, m_plain_wing, m_plain_outer, acc, cut);
     }
   }
-
-private:
-  static constexpr int max_cached_valence = 32;
 
   // the next halfedge leaving source(x), `steps` times
   static halfedge_descriptor rotate(const Mesh& mesh, halfedge_descriptor x, int steps)
@@ -196,7 +236,6 @@ private:
   FT m_outer;
   FT m_plain_wing;
   FT m_plain_outer;
-  Border_curve_rule<FT> m_border;
   std::vector<Weights> m_cache;      // by valence, 0..max_cached_valence
   std::vector<Weights> m_half_cache; // the same, halved
 };
