@@ -165,6 +165,8 @@ private:
       }
     }
     Sharp_vertex<Mesh>& record = m_records[i];
+    if(sharp == 0 && !Rules::is_sharp(m_vertex[i]))
+      return; // smooth, with smooth children: the record's defaults, the halves' 0
     int child_sharp = 0, found = 0, child_found = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_target(v, *m_mesh)) {
       const S& s = m_edge[m_number(h) >> 1];
