@@ -381,11 +381,11 @@ foreach(scheme IN ITEMS butterfly modified-butterfly)
 endforeach()
 # OpenSubdiv's icosahedron with infinitely sharp creases and corners, refined
 # by the modified butterfly, writes the children's tags; its semi-sharp twin is
-# refused by the butterflies, naming the edge
+# refused by the butterflies, naming the line
 subdiv_cli_test(surface_modified_butterfly_infsharp ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_infsharp.obj
   -o @WORK@/out.obj --scheme modified-butterfly --levels 2
   OUTPUT @WORK@/out.obj VERTICES 648 FACES 1280 FILE @WORK@/out.obj FILE_REGEX "\nt crease 2/1/0 [0-9]+ [0-9]+ 10\n.*\nt corner 1/1/0 [0-9]+ 10\n")
-subdiv_surface_error(surface_butterfly_semisharp 1 "butterfly: edge [0-9]+ is semi-sharp \\(above 0, below 10\\): this scheme takes infinitely sharp creases and corners only"
+subdiv_surface_error(surface_butterfly_semisharp 1 "'[^']*loop_icos_semisharp.obj' line 63: tag 'corner': the sharpness 2\\.50* is semi-sharp: --scheme butterfly takes 0 or 10 and above only"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_semisharp.obj ${mesh_out} --scheme butterfly --levels 1)
 # --displace with tags: the cube with its 12 edges infinitely sharp is its
 # own limit (surface_limit_with_creases), and heights of 1 push every point

@@ -42,6 +42,9 @@ struct Surface_scheme
   /// refines with the sharpness maps of the mesh (surface_tags.h) and the
   /// options of the tags; empty for the schemes that do not take tags
   std::function<void(Surface& mesh, int levels, double max_memory, const Sharp_options& options)> run_sharp;
+  /// whether it takes semi-sharp values (the butterflies take infinitely
+  /// sharp ones only)
+  bool semi_sharp = true;
 };
 
 /// every scheme this build offers, in the order of --help

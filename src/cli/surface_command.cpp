@@ -253,7 +253,8 @@ int surface_command(const std::vector<std::string>& arguments)
     notes.push_back("ignored the " + std::to_string(file_tags.tags.size()) + " tag lines (t) of '" + input +
                     "': --repair renumbers the vertices they name");
   else if(!file_tags.tags.empty())
-    sharp_options = apply_obj_tags(file_tags.tags, file_tags.file_vertices, mesh, file_numbers, input, notes);
+    sharp_options = apply_obj_tags(file_tags.tags, file_tags.file_vertices, mesh, file_numbers, input, notes,
+                                   scheme.semi_sharp ? std::string() : scheme.name);
   apply_sharp_options(args, sharp_options);
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases

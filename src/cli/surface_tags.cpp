@@ -32,8 +32,10 @@ std::string where(const std::string& path, const Obj_tag& tag)
   return "'" + path + "' line " + std::to_string(tag.line) + ": tag '" + tag.name + "': ";
 }
 
-// the sharpness values of a tag with `items` items: one for all, or one each
-std::vector<double> sharpness_values(const Obj_tag& tag, std::size_t items, const std::string& at)
+// the sharpness values of a tag with `items` items: one for all, or one each;
+// semi-sharp ones refused when `semi_sharp_refused_by` names a scheme
+std::vector<double> sharpness_values(const Obj_tag& tag, std::size_t items, const std::string& at,
+                                     const std::string& semi_sharp_refused_by)
 {
   if(!tag.strings.empty())
     throw Input_error(at + "takes no strings");
@@ -45,6 +47,9 @@ std::vector<double> sharpness_values(const Obj_tag& tag, std::size_t items, cons
     const double s = tag.floats.size() == 1 ? tag.floats[0] : tag.floats[k];
     if(!(s >= 0))
       throw Input_error(at + "the sharpness " + std::to_string(s) + " is negative or NaN");
+    if(!semi_sharp_refused_by.empty() && s > 0 && s < 10)
+      throw Input_error(at + "the sharpness " + std::to_string(s) + " is semi-sharp: --scheme " +
+                        semi_sharp_refused_by + " takes 0 or 10 and above only (infinitely sharp creases and corners)");
     values.push_back(s);
   }
   return values;
@@ -54,8 +59,8 @@ class Tag_reader
 {
 public:
   Tag_reader(Surface& mesh, std::size_t file_vertices, const std::vector<std::size_t>& file_numbers,
-             const std::string& path)
-    : m_mesh(mesh), m_path(path), m_copies_of(file_vertices)
+             const std::string& path, const std::string& semi_sharp_refused_by)
+    : m_mesh(mesh), m_path(path), m_semi_sharp_refused_by(semi_sharp_refused_by), m_copies_of(file_vertices)
   {
     for(Surface::Vertex_index v : mesh.vertices())
       if(v.idx() < file_numbers.size() && file_numbers[v.idx()] >= 1 && file_numbers[v.idx()] <= file_vertices)
@@ -67,7 +72,7 @@ public:
     const std::string at = where(m_path, tag);
     if(tag.ints.empty() || tag.ints.size() % 2 != 0)
       throw Input_error(at + "needs pairs of vertices, got " + std::to_string(tag.ints.size()) + " numbers");
-    const std::vector<double> values = sharpness_values(tag, tag.ints.size() / 2, at);
+    const std::vector<double> values = sharpness_values(tag, tag.ints.size() / 2, at, m_semi_sharp_refused_by);
     Edge_map edges = m_mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
     for(std::size_t k = 0; k < values.size(); ++k) {
       bool joined = false; // by one edge, or by several between the copies of a split vertex
@@ -90,7 +95,7 @@ public:
     const std::string at = where(m_path, tag);
     if(tag.ints.empty())
       throw Input_error(at + "needs at least one vertex");
-    const std::vector<double> values = sharpness_values(tag, tag.ints.size(), at);
+    const std::vector<double> values = sharpness_values(tag, tag.ints.size(), at, m_semi_sharp_refused_by);
     Vertex_map vertices = m_mesh.add_property_map<Surface::Vertex_index, double>(vertex_sharpness_name, 0).first;
     for(std::size_t k = 0; k < values.size(); ++k)
       for(const Surface::Vertex_index v : copies(tag.ints[k], at))
@@ -127,6 +132,7 @@ private:
 
   Surface& m_mesh;
   const std::string& m_path;
+  const std::string& m_semi_sharp_refused_by;
   std::vector<std::vector<Surface::Vertex_index>> m_copies_of; // by file vertex, from 0
 };
 
@@ -143,10 +149,10 @@ void require_one_value(const Obj_tag& tag, bool integer, const std::string& at)
 
 Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_vertices, Surface& mesh,
                              const std::vector<std::size_t>& file_numbers, const std::string& path,
-                             std::vector<std::string>& notes)
+                             std::vector<std::string>& notes, const std::string& semi_sharp_refused_by)
 {
   Sharp_options options;
-  Tag_reader reader(mesh, file_vertices, file_numbers, path);
+  Tag_reader reader(mesh, file_vertices, file_numbers, path, semi_sharp_refused_by);
   std::size_t ignored = 0;
   for(const Obj_tag& tag : tags) {
     const std::string at = where(path, tag);

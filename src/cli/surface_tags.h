@@ -96,11 +96,13 @@ auto tag_parameters(Surface& mesh, const Sharp_options& options)
  * tags number vertices from 0, as OpenSubdiv's shapes do.
  * \throws Input_error naming `path` and the line: a malformed tag, a vertex
  *         out of range or in no face, a face out of range, a crease that is
- *         no edge of the mesh, a negative or NaN sharpness
+ *         no edge of the mesh, a negative or NaN sharpness, a semi-sharp one
+ *         when `semi_sharp_refused_by` names a scheme (that takes infinitely
+ *         sharp values only)
  */
 Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_vertices, Surface& mesh,
                              const std::vector<std::size_t>& file_numbers, const std::string& path,
-                             std::vector<std::string>& notes);
+                             std::vector<std::string>& notes, const std::string& semi_sharp_refused_by = "");
 
 /// `CGAL::Subdiv::mark_sharp_edges`: every edge of `mesh` whose faces bend
 /// by more than `angle_in_degrees` becomes infinitely sharp in the edge
