@@ -505,6 +505,39 @@ TYPED_TEST(Butterfly_creases, crease_is_the_four_point_curve_with_reflected_ends
   EXPECT_LT(on_curve, 2u); // one may agree by chance
 }
 
+// A corner (a vertex sharpness of 10) on the crease ends its polyline there:
+// the crease refines as the two curves on either side of it, each with its
+// ends reflected.
+TYPED_TEST(Butterfly_creases, a_corner_ends_the_crease)
+{
+  EMesh mesh = creased_grid(grid_height);
+  auto corners = mesh.add_property_map<EMesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  corners[testing_utils::grid_vertex<EMesh>(6, 3, 3)] = FT(10);
+  std::vector<P> left, right;
+  for(int i = 1; i <= 5; ++i) {
+    const P p = mesh.point(testing_utils::grid_vertex<EMesh>(6, i, 3));
+    if(i <= 3)
+      left.push_back(p);
+    if(i >= 3)
+      right.push_back(p);
+  }
+  S::subdivide(mesh, TypeParam(),
+               S::parameters::edge_sharpness_map(mesh.property_map<EMesh::Edge_index, FT>("e:sharpness").first)
+                 .vertex_sharpness_map(corners));
+  const auto keep_ends = S::parameters::number_of_iterations(1).end_rule(S::End_rule::keep_ends);
+  for(const std::vector<P>& polyline : {left, right}) {
+    const std::vector<P> curve = S::refine_polyline(polyline, S::Four_point_scheme<FT>(), keep_ends);
+    ASSERT_EQ(curve.size(), 5u);
+    for(std::size_t k = 1; k < curve.size(); k += 2) {
+      std::size_t found = 0;
+      for(auto v : vertices(mesh))
+        found += mesh.point(v) == curve[k] ? 1 : 0;
+      EXPECT_EQ(found, 1u) << "curve point " << k;
+    }
+  }
+  EXPECT_EQ(corners[testing_utils::grid_vertex<EMesh>(6, 3, 3)], FT(10)); // the corner's child is a corner
+}
+
 // Neither side of a crease reaches across it: moving a vertex next to the
 // crease on one side (y = 4) leaves every new point on the other side and on
 // the crease (y <= 3; the scheme reproduces the planar lattice, so a new
