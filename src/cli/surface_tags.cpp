@@ -47,7 +47,7 @@ std::vector<double> sharpness_values(const Obj_tag& tag, std::size_t items, cons
     const double s = tag.floats.size() == 1 ? tag.floats[0] : tag.floats[k];
     if(!(s >= 0))
       throw Input_error(at + "the sharpness " + std::to_string(s) + " is negative or NaN");
-    if(!semi_sharp_refused_by.empty() && s > 0 && s < 10)
+    if(!semi_sharp_refused_by.empty() && CGAL::Subdiv::internal::Crease_rules<double>::is_semi_sharp(s))
       throw Input_error(at + "the sharpness " + std::to_string(s) + " is semi-sharp: --scheme " +
                         semi_sharp_refused_by + " takes 0 or 10 and above only (infinitely sharp creases and corners)");
     values.push_back(s);

@@ -132,7 +132,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size, isolated_check);
   const auto tags = internal::sharpness_tags_of<PolygonMesh, typename Mask::Number_type>(np);
-  tags.check(mesh, mask.name(), !internal::Takes_semi_sharp_tags<Mask>::value);
+  tags.check(mesh, mask, mask.name());
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);

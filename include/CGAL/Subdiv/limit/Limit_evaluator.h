@@ -226,7 +226,7 @@ private:
       static_assert(internal::Takes_sharpness_tags<M>::value,
                     "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
       if constexpr(internal::Has_crease_curve<M>::value) {
-        tags.check(mesh, who, !internal::Takes_semi_sharp_tags<M>::value);
+        tags.check(mesh, m, who);
         rows = internal::Limit_rows<FT>(num_vertices(mesh));
         // the rules of this level do not depend on how sharpness decays
         return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)),

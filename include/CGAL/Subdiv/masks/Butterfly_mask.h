@@ -109,9 +109,8 @@ public:
   void edge_node(const Edge_view<Mesh>& e, Accumulator& acc) const
   {
     if constexpr(Tagged) { // creases: sharp edges as borders, to both sides
-      if(e.sharp()) {      // a border edge along its loop, as without tags
-        const auto h = e.on_border() ? e.border_halfedge() : e.halfedge();
-        internal::crease_edge_point(*this->sharp_level(), this->crease_curve(), e.mesh(), h, acc);
+      if(e.sharp()) {
+        internal::crease_edge_point(*this->sharp_level(), this->crease_curve(), e, acc);
         return;
       }
       const internal::Sharp_cuts<internal::Sharp_level<Mesh, FT>> cuts{this->sharp_level()};

@@ -129,9 +129,8 @@ public:
     const Mesh& mesh = e.mesh();
     if constexpr(Tagged) { // creases: sharp edges as borders, to both sides
       const internal::Sharp_level<Mesh, FT>& level = *this->sharp_level();
-      if(e.sharp()) { // a border edge along its loop, as without tags
-        internal::crease_edge_point(level, this->crease_curve(), mesh,
-                                    e.on_border() ? e.border_halfedge() : e.halfedge(), acc);
+      if(e.sharp()) {
+        internal::crease_edge_point(level, this->crease_curve(), e, acc);
         return;
       }
       const Vertex_view<Mesh> a = level.vertex_view(source(e.halfedge(), mesh)),

@@ -96,16 +96,19 @@ struct Sharp_cuts
   }
 };
 
-// The new vertex on the sharp edge of h under the tags of `level`: the curve
-// rule `curve` along the polyline of sharp edges (a crease, or the border),
-// which goes on through a vertex with the crease rule (two sharp edges) and
-// ends at any other (a corner, or the end of a dart's edge), where it is
-// continued by point reflection (`Border_curve_rule::polyline_edge_point`).
+// The new vertex on the sharp edge `e` under the tags of `level`: the curve
+// rule `curve` along the polyline of sharp edges (a crease, or the border,
+// walked with its loop as without tags), which goes on through a vertex with
+// the crease rule (two sharp edges) and ends at any other (a corner, or the
+// end of a dart's edge), where it is continued by point reflection
+// (`Border_curve_rule::polyline_edge_point`).
 template <class Level, class Mesh, class FT, class Accumulator>
-void crease_edge_point(const Level& level, const Border_curve_rule<FT>& curve, const Mesh& mesh,
-                       typename boost::graph_traits<Mesh>::halfedge_descriptor h, Accumulator& acc)
+void crease_edge_point(const Level& level, const Border_curve_rule<FT>& curve, const Edge_view<Mesh>& e,
+                       Accumulator& acc)
 {
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  const Mesh& mesh = e.mesh();
+  const auto h = e.on_border() ? e.border_halfedge() : e.halfedge();
   const vertex_descriptor none = boost::graph_traits<Mesh>::null_vertex();
   // the polyline's vertex beyond v, away from the edge of h
   const auto beyond = [&](vertex_descriptor v) {

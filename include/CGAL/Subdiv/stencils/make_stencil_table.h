@@ -351,7 +351,7 @@ Stencil_table<typename Mask::Number_type> stencil_table_of(
   internal::check_mask_options(mask, np);
   internal::check_mesh(mesh, vpm, mask.name(), Host::required_face_size);
   const auto tags = sharpness_tags_of<PolygonMesh, FT>(np);
-  tags.check(mesh, mask.name(), !Takes_semi_sharp_tags<Mask>::value);
+  tags.check(mesh, mask, mask.name());
   internal::check_output_faces(mask.name(), static_cast<double>(num_faces(mesh)), Host::face_growth(),
                                Host::peak_bytes_per_face(), levels, max_memory);
 

@@ -86,8 +86,8 @@ constexpr bool has_sharpness_tags()
 /// no sharpness tags: every level with the mask as it is
 struct No_sharpness_tags
 {
-  template <class Mesh>
-  void check(const Mesh&, const std::string&, bool = false) const
+  template <class Mesh, class Mask>
+  void check(const Mesh&, const Mask&, const std::string&) const
   {}
   /// `use(mask)`
   template <class Mesh, class Mask, class Use>
@@ -117,12 +117,14 @@ public:
     : m_edges(edges), m_vertices(vertices), m_method(method)
   {}
 
-  /// refuses a negative or NaN sharpness, and a semi-sharp one with
-  /// `infinitely_sharp_only` (`Sharp_level::check_tags`): called before the
-  /// mesh or a map is changed
-  void check(const Mesh& mesh, const std::string& scheme, bool infinitely_sharp_only = false) const
+  /// refuses a negative or NaN sharpness, and a semi-sharp one where `mask`
+  /// takes infinitely sharp tags only (`Takes_semi_sharp_tags`,
+  /// `Sharp_level::check_tags`; `who` names the caller in the message):
+  /// called before the mesh or a map is changed
+  template <class Mask>
+  void check(const Mesh& mesh, const Mask&, const std::string& who) const
   {
-    Sharp_level<Mesh, FT>::check_tags(mesh, edge_reader(), vertex_reader(), scheme, infinitely_sharp_only);
+    Sharp_level<Mesh, FT>::check_tags(mesh, edge_reader(), vertex_reader(), who, !Takes_semi_sharp_tags<Mask>::value);
   }
 
   /// the tags of `mesh`'s level, for a mask with border corners `corners`
