@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <complex>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -548,4 +549,253 @@ TEST(Sqrt3, a_quad_mesh_is_refused_and_left_unchanged)
     EXPECT_EQ(num_faces(quad), 6u);
     EXPECT_EQ(points_of(quad), before);
   }
+}
+
+// ---- creases (sharpness tags): infinitely sharp edges as borders ----------
+
+namespace {
+
+FT crease_height(int i, int j)
+{
+  return FT((i * 7 + j * 5) % 11) / FT(8) - FT(j * j) / FT(16);
+}
+
+// the edge of the lattice vertices (i, j) and (k, l) of a grid(n, n, ...)
+Exact_mesh::Edge_index grid_edge(const Exact_mesh& mesh, int n, int i, int j, int k, int l)
+{
+  return mesh.edge(
+    mesh.halfedge(testing_utils::grid_vertex<Exact_mesh>(n, i, j), testing_utils::grid_vertex<Exact_mesh>(n, k, l)));
+}
+
+// a 9 x 9 triangle grid at generic rational heights, with the closed crease
+// around the square [3, 6] x [3, 6] (12 infinitely sharp edges, their ends
+// crease vertices) in the map "e:sharpness"
+Exact_mesh creased_grid(const std::function<FT(int, int)>& height)
+{
+  Exact_mesh mesh = testing_utils::grid<Exact_mesh>(
+    9, 9, [&](int i, int j) { return PE(i, j, height(i, j)); }, true);
+  auto sharpness = mesh.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  for(int k = 3; k < 6; ++k) {
+    sharpness[grid_edge(mesh, 9, k, 3, k + 1, 3)] = FT(10);
+    sharpness[grid_edge(mesh, 9, k, 6, k + 1, 6)] = FT(10);
+    sharpness[grid_edge(mesh, 9, 3, k, 3, k + 1)] = FT(10);
+    sharpness[grid_edge(mesh, 9, 6, k, 6, k + 1)] = FT(10);
+  }
+  return mesh;
+}
+
+Exact_mesh::Property_map<Exact_mesh::Edge_index, FT> edge_tags(Exact_mesh& mesh)
+{
+  return mesh.property_map<Exact_mesh::Edge_index, FT>("e:sharpness").first;
+}
+
+template <class Mask>
+void refine_creased(Exact_mesh& mesh, int levels = 2)
+{
+  S::subdivide(mesh, Mask(), S::parameters::number_of_iterations(levels).edge_sharpness_map(edge_tags(mesh)));
+}
+
+// the vertices of the faces reached from vertex 0 (a corner of the grid,
+// outside the square) without crossing a sharp edge: that side, with the
+// crease that bounds it
+std::vector<Exact_mesh::Vertex_index> outer_side(Exact_mesh& mesh)
+{
+  const auto sharpness = edge_tags(mesh);
+  std::vector<bool> seen_face(num_faces(mesh), false), seen_vertex(num_vertices(mesh), false);
+  std::vector<Exact_mesh::Face_index> stack;
+  for(auto f : CGAL::faces_around_target(mesh.halfedge(Exact_mesh::Vertex_index(0)), mesh))
+    if(f != Exact_mesh::null_face())
+      stack.push_back(f);
+  std::vector<Exact_mesh::Vertex_index> side;
+  while(!stack.empty()) {
+    const auto f = stack.back();
+    stack.pop_back();
+    if(seen_face[f.idx()])
+      continue;
+    seen_face[f.idx()] = true;
+    for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      if(!seen_vertex[mesh.target(h).idx()]) {
+        seen_vertex[mesh.target(h).idx()] = true;
+        side.push_back(mesh.target(h));
+      }
+      const auto across = mesh.face(mesh.opposite(h));
+      if(across != Exact_mesh::null_face() && sharpness[mesh.edge(h)] == FT(0))
+        stack.push_back(across);
+    }
+  }
+  return side;
+}
+
+// the points of the vertices on sharp edges that are not border edges
+std::vector<PE> crease_points(Exact_mesh& mesh)
+{
+  const auto sharpness = edge_tags(mesh);
+  std::vector<PE> points;
+  for(auto v : vertices(mesh)) {
+    bool on_crease = false;
+    for(auto h : CGAL::halfedges_around_target(v, mesh))
+      on_crease = on_crease || (sharpness[mesh.edge(h)] >= FT(10) && !mesh.is_border(mesh.edge(h)));
+    if(on_crease)
+      points.push_back(mesh.point(v));
+  }
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+} // namespace
+
+// both sqrt3 schemes: their border rules are ternary (Kobbelt's cubic
+// B-spline, the interpolating 4-point rule), applied on every second step
+template <class Mask>
+class Sqrt3_creases : public ::testing::Test
+{};
+using Sqrt3_crease_masks = ::testing::Types<S::Sqrt3_mask<Exact_mesh>, S::Interpolating_sqrt3_mask<Exact_mesh>>;
+TYPED_TEST_SUITE(Sqrt3_creases, Sqrt3_crease_masks);
+
+// Over two levels (a resting step, then one that refines the border and the
+// crease), the crease loop is refined exactly as the border of the disk it
+// bounds, cut out of the grid and refined without tags: the scheme's border
+// rule along the crease, in rationals. Its children are sharp: 36 edges.
+TYPED_TEST(Sqrt3_creases, a_crease_is_refined_as_the_border_of_the_disk_it_bounds)
+{
+  Exact_mesh mesh = creased_grid(crease_height);
+  Exact_mesh disk = testing_utils::grid<Exact_mesh>(
+    3, 3, [&](int i, int j) { return PE(i + 3, j + 3, crease_height(i + 3, j + 3)); }, true);
+  refine_creased<TypeParam>(mesh, 1);
+  EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_EQ(crease_points(mesh).size(), 12u); // the resting step keeps the crease
+  refine_creased<TypeParam>(mesh, 1);
+  EXPECT_TRUE(mesh.is_valid(false));
+  S::subdivide(disk, TypeParam(), S::parameters::number_of_iterations(2));
+  std::vector<PE> border;
+  for(auto v : vertices(disk))
+    if(disk.is_border(v))
+      border.push_back(disk.point(v));
+  std::sort(border.begin(), border.end());
+  ASSERT_EQ(border.size(), 36u);
+  EXPECT_EQ(crease_points(mesh), border);
+  std::size_t sharp = 0;
+  for(auto e : edges(mesh))
+    sharp += edge_tags(mesh)[e] >= FT(10) && !mesh.is_border(e) ? 1 : 0;
+  EXPECT_EQ(sharp, 36u);
+  // without the tags the crease's new points are not the border's
+  Exact_mesh untagged = creased_grid(crease_height);
+  S::subdivide(untagged, TypeParam(), S::parameters::number_of_iterations(2));
+  std::size_t on_border = 0;
+  for(auto v : vertices(untagged))
+    on_border += std::binary_search(border.begin(), border.end(), untagged.point(v)) ? 1 : 0;
+  EXPECT_LT(on_border, 36u);
+}
+
+// Moving a vertex inside the square moves no vertex of the outer side nor of
+// the crease over two levels; without the tags it moves some.
+TYPED_TEST(Sqrt3_creases, the_two_sides_do_not_interact)
+{
+  const auto moved_height = [](int i, int j) -> FT { return crease_height(i, j) + (i == 4 && j == 5 ? FT(5) : FT(0)); };
+  Exact_mesh a = creased_grid(crease_height), b = creased_grid(moved_height);
+  refine_creased<TypeParam>(a);
+  refine_creased<TypeParam>(b);
+  ASSERT_EQ(num_vertices(a), num_vertices(b));
+  const std::vector<Exact_mesh::Vertex_index> side = outer_side(a);
+  EXPECT_GT(side.size(), num_vertices(a) / 2);
+  std::size_t moved_outside = 0, moved = 0;
+  for(auto v : side)
+    moved_outside += a.point(v) != b.point(v) ? 1 : 0;
+  for(auto v : vertices(a))
+    moved += a.point(v) != b.point(v) ? 1 : 0;
+  EXPECT_EQ(moved_outside, 0u);
+  EXPECT_GT(moved, 0u);
+  Exact_mesh c = creased_grid(crease_height), d = creased_grid(moved_height);
+  S::subdivide(c, TypeParam(), S::parameters::number_of_iterations(2));
+  S::subdivide(d, TypeParam(), S::parameters::number_of_iterations(2));
+  std::size_t untagged_moved = 0;
+  for(auto v : side)
+    untagged_moved += c.point(v) != d.point(v) ? 1 : 0;
+  EXPECT_GT(untagged_moved, 0u);
+}
+
+// Two levels with the tags are one level then another (the children of a
+// sharp edge are sharp, and the phase is read with them), and the stencil
+// table with the tags gives the same points, in rationals.
+TYPED_TEST(Sqrt3_creases, levels_and_tables_agree)
+{
+  Exact_mesh twice = creased_grid(crease_height), by_levels = twice, coarse = twice;
+  refine_creased<TypeParam>(twice, 3);
+  for(int level = 0; level < 3; ++level)
+    refine_creased<TypeParam>(by_levels, 1);
+  EXPECT_TRUE(same_mesh(twice, by_levels));
+  const S::Stencil_table<FT> table = S::make_stencil_table(
+    coarse, TypeParam(), S::parameters::number_of_iterations(3).edge_sharpness_map(edge_tags(coarse)));
+  std::vector<PE> from_table;
+  table.apply(std::vector<PE>(coarse.points().begin(), coarse.points().end()), from_table);
+  EXPECT_EQ(from_table, points_of(twice));
+}
+
+// Tags of 0 give the untagged result bit for bit, in doubles, border
+// included; and the untagged result has not changed with creases.
+TYPED_TEST(Sqrt3_creases, zero_tags_change_nothing)
+{
+  using DMask = decltype(TypeParam().template rebind<Mesh, double>());
+  Mesh zero_tags = testing_utils::grid<Mesh>(
+    7, 7, [](int i, int j) { return K::Point_3(i, j, CGAL::to_double(crease_height(i, j)) / 3); }, true);
+  Mesh untagged = zero_tags;
+  auto zeros = zero_tags.add_property_map<Mesh::Edge_index, double>("e:sharpness", 0.).first;
+  auto corners = zero_tags.add_property_map<Mesh::Vertex_index, double>("v:sharpness", 0.).first;
+  S::subdivide(zero_tags, DMask(),
+               S::parameters::number_of_iterations(3).edge_sharpness_map(zeros).vertex_sharpness_map(corners));
+  S::subdivide(untagged, DMask(), S::parameters::number_of_iterations(3));
+  EXPECT_TRUE(same_mesh(zero_tags, untagged));
+}
+
+// A semi-sharp value is refused, naming the edge, and the mesh and its tags
+// are left as they were.
+TYPED_TEST(Sqrt3_creases, semi_sharp_is_refused)
+{
+  Exact_mesh mesh = creased_grid(crease_height);
+  edge_tags(mesh)[Exact_mesh::Edge_index(7)] = FT(1) / FT(2);
+  Exact_mesh before = mesh;
+  const std::string message = testing_utils::bad_input_message([&] { refine_creased<TypeParam>(mesh); });
+  EXPECT_NE(message.find(TypeParam().name() + ": edge 7 is semi-sharp"), std::string::npos) << message;
+  EXPECT_TRUE(same_mesh(mesh, before));
+  for(auto e : edges(mesh))
+    ASSERT_EQ(edge_tags(mesh)[e], edge_tags(before)[e]);
+}
+
+// A corner on the crease loop ends it there: the corner stays, and the new
+// point next to it on each of its sharp edges is the border rule with the
+// polyline continued by point reflection (2 c - s before the corner c): for
+// Kobbelt's rule (16 c + 10 s + (2 c - s)) / 27 = (2 c + s) / 3, for the
+// interpolating one (-5 (2 c - s) + 60 c + 30 s - 4 s') / 81.
+TYPED_TEST(Sqrt3_creases, a_corner_ends_the_crease)
+{
+  Exact_mesh mesh = creased_grid(crease_height);
+  auto corners = mesh.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  const auto corner = testing_utils::grid_vertex<Exact_mesh>(9, 4, 3);
+  corners[corner] = FT(10);
+  const PE c = mesh.point(corner);
+  const PE s = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 5, 3));
+  const PE s2 = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 6, 3));
+  const PE t = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 3, 3));
+  const PE t2 = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 3, 4));
+  Exact_mesh no_corner = mesh;
+  S::subdivide(
+    mesh, TypeParam(),
+    S::parameters::number_of_iterations(2).edge_sharpness_map(edge_tags(mesh)).vertex_sharpness_map(corners));
+  EXPECT_EQ(mesh.point(corner), c);
+  EXPECT_EQ(corners[corner], FT(10)); // the corner's child is a corner
+  const bool interpolating = TypeParam().is_interpolating();
+  const auto next_to_corner = [&](const PE& s1, const PE& beyond) {
+    if(!interpolating)
+      return CGAL::barycenter(c, FT(2), s1, FT(1));
+    const FT w[3] = {FT(50) / FT(81), FT(35) / FT(81), FT(-4) / FT(81)};
+    return PE(w[0] * c.x() + w[1] * s1.x() + w[2] * beyond.x(), w[0] * c.y() + w[1] * s1.y() + w[2] * beyond.y(),
+              w[0] * c.z() + w[1] * s1.z() + w[2] * beyond.z());
+  };
+  const std::vector<PE> points = points_of(mesh);
+  for(const PE& expected : {next_to_corner(s, s2), next_to_corner(t, t2)})
+    EXPECT_EQ(std::count(points.begin(), points.end(), expected), 1) << expected;
+  // without the corner the crease goes on through the vertex: other points
+  refine_creased<TypeParam>(no_corner);
+  const std::vector<PE> through = points_of(no_corner);
+  EXPECT_EQ(std::count(through.begin(), through.end(), next_to_corner(s, s2)), 0);
 }

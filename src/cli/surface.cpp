@@ -292,7 +292,8 @@ void refuse_tags_unless_taken(const Surface_scheme& scheme, const Sharp_options*
     throw Input_error(
       "--scheme " + scheme.name +
       " does not take OpenSubdiv's crease, corner and boundary tags yet, nor --sharp-angle and the boundary "
-      "options (loop, loop-warren, catmull-clark, linear, butterfly and modified-butterfly do)");
+      "options (loop, loop-warren, catmull-clark, linear, butterfly, modified-butterfly, sqrt3 and "
+      "interpolating-sqrt3 do)");
 }
 
 Surface_result subdivide_surface(Surface& mesh, const Surface_scheme& scheme, int levels, double max_memory,

@@ -13,6 +13,8 @@
 #include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/views/Split.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace Subdiv {
 
@@ -50,6 +52,23 @@ struct Host_for<Split::sqrt3, Mesh>
 /// the host that refines with `Mask` (its `split` over its `Polygon_mesh`)
 template <class Mask>
 using Host_of = typename Host_for<Mask::split, typename Mask::Polygon_mesh>::type;
+
+namespace internal {
+
+/// the host of `mask` on `mesh`: made with the mask where the topology of
+/// the split depends on its sharpness tags (`Sqrt3_split` keeps sharp edges)
+template <class Mask, class Mesh>
+Host_of<Mask> make_host(const Mesh& mesh, const Mask& mask)
+{
+  if constexpr(std::is_constructible<Host_of<Mask>, const Mesh&, const Mask&>::value)
+    return Host_of<Mask>(mesh, mask);
+  else {
+    (void)mask;
+    return Host_of<Mask>(mesh);
+  }
+}
+
+} // namespace internal
 
 } // namespace Subdiv
 } // namespace CGAL

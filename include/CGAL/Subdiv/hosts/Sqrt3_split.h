@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -34,14 +35,21 @@ namespace internal {
  *     flipped);
  *   - every face point has exactly three old neighbours (the corners of its
  *     old face).
+ * `cut(e)` says which edges count as border edges here: the border edges,
+ * and with sharpness tags the sharp edges too. A resting step keeps a sharp
+ * edge as it keeps a border edge, and the children of a sharp edge are
+ * sharp, so the phase is read from the same structure with or without
+ * creases (a closed mesh with creases has a phase as well). The phase is
+ * read, not passed, so that one call of two levels and two calls of one
+ * agree with creases as they do without.
  * The test reads the connectivity and the order of the elements, nothing
  * else, in one pass over the edges and one over the faces. The order part
  * keeps meshes that merely have the connectivity of a resting step's output
  * (CGAL's hedra_open.off, an octahedron without two faces, is one: two
  * triangles after a resting step) from being taken for one.
  */
-template <class Mesh, class Numbering>
-bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
+template <class Mesh, class Numbering, class Cut>
+bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number, const Cut& cut)
 {
   const std::size_t vertex_count = num_vertices(mesh), face_count = num_faces(mesh);
   if(face_count % 3 != 0 || vertex_count < face_count / 3)
@@ -52,9 +60,9 @@ bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
     const auto h = halfedge(e, mesh);
     const std::size_t a = number(source(h, mesh)), b = number(target(h, mesh));
     const bool a_old = a < first_face_point, b_old = b < first_face_point;
-    if(is_border_edge(h, mesh)) {
+    if(cut(e)) {
       if(!a_old || !b_old)
-        return false; // a face point on the border
+        return false; // a face point on the border or on a crease
     } else if(a_old && b_old) {
       return false; // an unflipped old interior edge
     } else if(a_old != b_old) {
@@ -117,19 +125,31 @@ bool sqrt3_border_is_pending(const Mesh& mesh, const Numbering& number)
  * more. A mesh that has the connectivity and the element order of a resting
  * step's output (e.g. three triangles around a valence-3 vertex that comes
  * last) is taken as one, and its border is refined on the first step. Closed
- * meshes have no phase and need nothing.
+ * meshes without creases have no phase and need nothing.
+ *
+ * <b>Creases.</b> Made with a mask that carries the sharpness tags of its
+ * level (`subdivide()` makes it so), the step refines every sharp edge as a
+ * border edge on both of its sides: it is not flipped; on a resting step
+ * each of its two triangles keeps it; on a refining step its two new
+ * vertices p1, p2 (`border_edge_node`, along the halfedge of the face met
+ * first) are shared by both sides, each triangle is split as a border
+ * triangle, and its three thirds are its children (`edge_parents()`). A
+ * vertex whose rule is crease or corner takes the border vertex rules, a
+ * dart the interior one. The counts are those above: a crease edge adds two
+ * vertices where its two faces lose their face points.
  *
  * Numbering of the new vertices: the old vertices first, in the mesh's
  * iteration order; then one face point per face, in face order (on a
- * refining step, only for the faces without border edge); then, on a
- * refining step, two vertices per border edge, p1 then p2, in the order of
- * their faces. Numbering of the new faces: for every old face in face order,
+ * refining step, only for the faces without border or sharp edge); then, on
+ * a refining step, two vertices per border or sharp edge, p1 then p2, in the
+ * order of their (first) faces. Numbering of the new faces: for every old face in face order,
  * for each of its halfedges h (from `halfedge(f)` on), the triangle
  * (target(h), face point of f, face point across h), or for a border
  * halfedge the kept border triangle (resting step) or the middle triangle
  * (p1, p2, c) (refining step).
  *
- * Masks used: `vertex_node(Vertex_view, acc)` (interior vertices),
+ * Masks used (with the views of `vertex_view()` and `edge_view()`, which
+ * carry the tags of a tagged mask): `vertex_node(Vertex_view, acc)` (interior vertices),
  * `face_node(Face_view, acc)`, `resting_border_vertex_node(Vertex_view, acc)`,
  * `border_vertex_node(Vertex_view, acc)` and `border_edge_node(Edge_view, k,
  * acc)` (the view of the face halfedge of the border edge, k = 1, 2).
@@ -168,17 +188,48 @@ public:
   /// the counts after one level: not known in advance (false)
   static bool next_counts(internal::Mesh_counts&) { return false; }
 
-  explicit Sqrt3_split(const Mesh& mesh)
+  explicit Sqrt3_split(const Mesh& mesh) : Sqrt3_split(mesh, std::vector<unsigned char>()) {}
+
+  /// the step with the sharpness tags of `mask`'s level, if it is a tagged
+  /// copy: a sharp edge is refined as a border edge on both of its sides
+  template <class Mask>
+  Sqrt3_split(const Mesh& mesh, const Mask& mask) : Sqrt3_split(mesh, sharp_edges(mesh, mask))
+  {}
+
+private:
+  // the sharp edges (by ordinal, border edges included) of a tagged mask's level; none otherwise
+  template <class Mask>
+  static std::vector<unsigned char> sharp_edges(const Mesh& mesh, const Mask& mask)
+  {
+    std::vector<unsigned char> sharp;
+    if constexpr(internal::Refines_with_tags<Mask>::value) {
+      sharp.resize(num_edges(mesh));
+      for(std::size_t e = 0; e < sharp.size(); ++e)
+        sharp[e] = mask.sharp_level()->is_sharp_edge(e) ? 1 : 0;
+    } else
+      (void)mesh, (void)mask;
+    return sharp;
+  }
+
+  Sqrt3_split(const Mesh& mesh, std::vector<unsigned char> sharp)
     : m_mesh(mesh), m_number(mesh), m_vertex_count(num_vertices(mesh)), m_edge_count(num_edges(mesh)),
-      m_face_count(num_faces(mesh))
+      m_face_count(num_faces(mesh)), m_sharp(std::move(sharp))
   {
     // slots of the spokes (new edges from a face point to a corner): one per
     // face halfedge, and on a refining step one per border halfedge
     const std::size_t halfedge_count = 2 * m_edge_count;
     m_border_edges = halfedge_count - 3 * m_face_count; // each triangle has 3 halfedges
-    if(m_border_edges == 0)
+    std::size_t crease_edges = 0;
+    for(std::size_t e = 0; e < m_sharp.size(); ++e)
+      crease_edges += m_sharp[e] != 0 ? 1 : 0;
+    crease_edges -= m_sharp.empty() ? 0 : m_border_edges; // the border edges are sharp
+    if(crease_edges == 0)
+      m_sharp.clear(); // the border alone: as without tags
+    if(m_border_edges == 0 && crease_edges == 0)
       return;
-    m_refine_border = internal::sqrt3_border_is_pending(mesh, m_number);
+    m_refine_border = internal::sqrt3_border_is_pending(
+      mesh, m_number,
+      [&](typename boost::graph_traits<Mesh>::edge_descriptor e) { return cut_edge(halfedge(e, mesh)); });
     m_slot.assign(halfedge_count, 0);
     Index face_slot = 0, border_slot = static_cast<Index>(3 * m_face_count);
     for(halfedge_descriptor h : halfedges(mesh)) {
@@ -190,27 +241,43 @@ public:
     }
     if(!m_refine_border)
       return;
-    // refining: face points only for faces without border edge, then p1, p2
+    // refining: face points only for the faces without a cut edge (a border
+    // or sharp edge; they have one at most, see sqrt3_border_is_pending),
+    // then p1, p2 for every cut edge, in the order of its first face; the two
+    // faces of a crease share them
+    const std::size_t cut_faces = m_border_edges + 2 * crease_edges;
     m_face_vertex.resize(m_face_count);
-    std::size_t point = m_vertex_count, border_point = m_vertex_count + m_face_count - m_border_edges;
+    m_second_vertex.resize(m_face_count);
+    std::vector<Index> pair_of_edge(crease_edges == 0 ? 0 : m_edge_count, 0);
+    std::size_t point = m_vertex_count, pair_point = m_vertex_count + m_face_count - cut_faces;
     for(face_descriptor f : CGAL::faces(mesh)) {
-      bool on_border = false;
+      const std::size_t k = m_number(f);
+      halfedge_descriptor cut = boost::graph_traits<Mesh>::null_halfedge();
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-        if(is_border(opposite(h, mesh), mesh)) {
-          on_border = true;
-          m_edge_of_border_face.push_back(static_cast<Index>(m_number(edge(h, mesh))));
-          m_border_halfedge_of_border_face.push_back(h);
-        }
-      if(on_border) {
-        m_face_vertex[m_number(f)] = static_cast<Index>(border_point);
-        border_point += 2;
-      } else {
-        m_face_of_point.push_back(static_cast<Index>(m_number(f)));
-        m_face_vertex[m_number(f)] = static_cast<Index>(point++);
+        if(cut_edge(h))
+          cut = h;
+      if(cut == boost::graph_traits<Mesh>::null_halfedge()) {
+        m_face_of_point.push_back(static_cast<Index>(k));
+        m_face_vertex[k] = static_cast<Index>(point++);
+        continue;
       }
+      const std::size_t e = m_number(cut) >> 1;
+      if(!pair_of_edge.empty() && pair_of_edge[e] != 0) { // the second face of a crease: p1 and p2 swap
+        m_face_vertex[k] = pair_of_edge[e] + 1;
+        m_second_vertex[k] = pair_of_edge[e];
+        continue;
+      }
+      if(!pair_of_edge.empty())
+        pair_of_edge[e] = static_cast<Index>(pair_point);
+      m_edge_of_pair.push_back(static_cast<Index>(e));
+      m_halfedge_of_pair.push_back(cut);
+      m_face_vertex[k] = static_cast<Index>(pair_point);
+      m_second_vertex[k] = static_cast<Index>(pair_point + 1);
+      pair_point += 2;
     }
   }
 
+public:
   /// whether this step refines the border (always false on a closed mesh)
   bool refines_border() const { return m_refine_border; }
 
@@ -238,7 +305,32 @@ public:
     const std::size_t k = j - m_vertex_count;
     if(k < m_face_of_point.size())
       return {Origin_kind::face, m_face_of_point[k]};
-    return {Origin_kind::edge, m_edge_of_border_face[(k - m_face_of_point.size()) / 2]};
+    return {Origin_kind::edge, m_edge_of_pair[(k - m_face_of_point.size()) / 2]};
+  }
+
+  /// the old edge that each new edge is a child of, by new edge: e + 1 for
+  /// old edge e, 0 for none (what `internal::Sharpness_writer` reads). The
+  /// kept border or sharp edge e (on a refining step, its middle third) is
+  /// new edge e; on a refining step the third at t of the face halfedge
+  /// (t, s) of a cut edge is the spoke of the slot of its prev (one per
+  /// side), and the third at s of a border edge the spoke of its own slot.
+  std::vector<std::size_t> edge_parents() const
+  {
+    std::vector<std::size_t> parents(number_of_new_edges(), 0);
+    if(m_slot.empty())
+      return parents;
+    for(halfedge_descriptor h : halfedges(m_mesh)) {
+      if(is_border(h, m_mesh) || !cut_edge(h))
+        continue;
+      const std::size_t e = m_number(h) >> 1;
+      parents[e] = e + 1;
+      if(!m_refine_border)
+        continue;
+      parents[m_edge_count + m_slot[m_number(prev(h, m_mesh))]] = e + 1;
+      if(is_border(opposite(h, m_mesh), m_mesh))
+        parents[m_edge_count + m_slot[m_number(h)]] = e + 1;
+    }
+    return parents;
   }
 
   /// the mask's weights of new vertex j (j < number_of_new_vertices()) to
@@ -247,8 +339,10 @@ public:
   void report(std::size_t j, const Mask& mask, Accumulator& acc) const
   {
     if(j < m_vertex_count) {
-      const Vertex_view<Mesh> view(m_mesh, m_number.vertex(j));
-      if(!view.on_border())
+      // the view of the mask's level: with tags, crease and corner vertices
+      // take the border rules (along the crease), darts the smooth one
+      const Vertex_view<Mesh> view = vertex_view(mask, m_mesh, m_number.vertex(j));
+      if(view.rule() == Vertex_rule::smooth || view.rule() == Vertex_rule::dart)
         mask.vertex_node(view, acc);
       else if(m_refine_border)
         mask.border_vertex_node(view, acc);
@@ -261,9 +355,9 @@ public:
       return mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(k)), acc);
     if(k < m_face_of_point.size())
       return mask.face_node(Face_view<Mesh>(m_mesh, m_number.face(m_face_of_point[k])), acc);
-    // on a refining step, the two new vertices of a border edge: p1, then p2
+    // on a refining step, the two new vertices of a border or sharp edge: p1, then p2
     const std::size_t b = k - m_face_of_point.size();
-    mask.border_edge_node(Edge_view<Mesh>(m_mesh, m_border_halfedge_of_border_face[b / 2]), 1 + int(b % 2), acc);
+    mask.border_edge_node(edge_view(mask, m_mesh, m_halfedge_of_pair[b / 2]), 1 + int(b % 2), acc);
   }
 
   /// the new faces (made in this thread, whatever `loop`)
@@ -271,7 +365,7 @@ public:
   {
     internal::Face_soup soup(number_of_new_vertices(), number_of_new_edges());
     soup.reserve(3 * m_face_count, 9 * m_face_count);
-    if(m_border_edges == 0)
+    if(m_slot.empty()) // no border, no crease
       add_closed_faces(soup);
     else
       add_faces_with_border(soup);
@@ -316,7 +410,7 @@ private:
       for(int k = 0; k < 3; ++k, h = next(h, m_mesh)) {
         const halfedge_descriptor o = opposite(h, m_mesh);
         const std::size_t id = m_number(h);
-        if(!is_border(o, m_mesh)) {
+        if(!cut_edge(h)) {
           soup.corner(m_number(target(h, m_mesh)), spoke_out(m_slot[id]));
           soup.corner(centre(h), id);
           soup.corner(centre(o), spoke_in(in_slot(o)));
@@ -326,39 +420,61 @@ private:
           soup.corner(m_number(target(h, m_mesh)), spoke_out(m_slot[id]));
           soup.corner(centre(h), spoke_in(m_slot[m_number(prev(h, m_mesh))]));
           soup.close_face(parent);
-        } else { // middle triangle (p1, p2, c) of a split border edge h = (t, s)
-          const std::size_t p1 = m_face_vertex[parent];
-          soup.corner(p1, id);
-          soup.corner(p1 + 1, spoke_in(m_slot[m_number(next(h, m_mesh))]));
-          soup.corner(m_number(target(next(h, m_mesh), m_mesh)), spoke_out(m_slot[m_number(o)]));
+        } else { // middle triangle (p1, p2, c) of a split border or sharp edge h = (t, s)
+          soup.corner(m_face_vertex[parent], id);
+          soup.corner(m_second_vertex[parent], spoke_in(m_slot[m_number(next(h, m_mesh))]));
+          soup.corner(m_number(target(next(h, m_mesh), m_mesh)), spoke_out(slot_to_p1(h)));
           soup.close_face(parent);
         }
       }
     }
   }
 
+  // whether the edge of h is refined as a border edge: a border edge, or a
+  // sharp one (with tags)
+  bool cut_edge(halfedge_descriptor h) const
+  {
+    return m_sharp.empty() ? CGAL::is_border_edge(h, m_mesh) : m_sharp[m_number(h) >> 1] != 0;
+  }
+  // whether the edge of h is sharp and not on the border (a crease)
+  bool crease(halfedge_descriptor h) const { return cut_edge(h) && !CGAL::is_border_edge(h, m_mesh); }
+
   // the new vertex that plays the face point of face(h) for the flip of h's
-  // edge: the face point, or on a refining step in a face with border edge
-  // b = (t, s), p1 for the edge (c, t) and p2 for the edge (s, c)
+  // edge: the face point, or on a refining step in a face with cut edge
+  // (t, s), p1 for the edge (c, t) and p2 for the edge (s, c)
   std::size_t centre(halfedge_descriptor h) const
   {
     if(!m_refine_border)
       return m_vertex_count + m_number(face(h, m_mesh));
-    const std::size_t j = m_face_vertex[m_number(face(h, m_mesh))];
+    const std::size_t k = m_number(face(h, m_mesh)), j = m_face_vertex[k];
     if(j < m_vertex_count + m_face_of_point.size())
       return j;
-    return is_border(opposite(prev(h, m_mesh), m_mesh), m_mesh) ? j + 1 : j;
+    return cut_edge(prev(h, m_mesh)) ? m_second_vertex[k] : j;
+  }
+
+  // slot of the spoke (c, p1) of the face halfedge h = (t, s) of a cut edge,
+  // on a refining step: the slot of the border halfedge, or for a crease
+  // (which has none) the slot of h, whose own spoke (s, p2) is the other
+  // side's third at s
+  std::size_t slot_to_p1(halfedge_descriptor h) const
+  {
+    const halfedge_descriptor o = opposite(h, m_mesh);
+    return m_slot[m_number(is_border(o, m_mesh) ? o : h)];
   }
 
   // slot of the spoke from centre(h) to source(h): the spoke of prev(h), or
-  // on a refining step, when next(h) is the border edge (t, s) and so h is
-  // (c, t), the spoke (c, p1), which takes the slot of the border halfedge
+  // on a refining step, when next(h) is the cut edge (t, s) and so h is
+  // (c, t), the spoke (c, p1); when prev(h) is a crease (t, s) and so h is
+  // (s, c), the third (p2, s) of the crease, which is the spoke (t', p1') of
+  // the other side's prev: each third of a crease is one edge of both sides
   std::size_t in_slot(halfedge_descriptor h) const
   {
     if(m_refine_border) {
-      const halfedge_descriptor b = opposite(next(h, m_mesh), m_mesh);
-      if(is_border(b, m_mesh))
-        return m_slot[m_number(b)];
+      const halfedge_descriptor n = next(h, m_mesh), p = prev(h, m_mesh);
+      if(cut_edge(n))
+        return slot_to_p1(n);
+      if(!m_sharp.empty() && crease(p))
+        return m_slot[m_number(prev(opposite(p, m_mesh), m_mesh))];
     }
     return m_slot[m_number(prev(h, m_mesh))];
   }
@@ -368,14 +484,16 @@ private:
   std::size_t m_vertex_count;
   std::size_t m_edge_count;
   std::size_t m_face_count;
+  std::vector<unsigned char> m_sharp; // with tags and creases: whether each edge (ordinal) is sharp
   std::size_t m_border_edges = 0;
   bool m_refine_border = false;
-  std::vector<Index> m_slot;                // spoke slot of each halfedge (mesh with border)
-  std::vector<Index> m_face_vertex;         // refining step: face point, or p1 of a border face
-  std::vector<Index> m_face_of_point;       // refining step: the face of each face point
-  std::vector<Index> m_edge_of_border_face; // refining step: the border edge of each border face
+  std::vector<Index> m_slot;          // spoke slot of each halfedge (mesh with border or creases)
+  std::vector<Index> m_face_vertex;   // refining step: face point, or p1 of a face with a cut edge
+  std::vector<Index> m_second_vertex; // refining step: p2 of a face with a cut edge
+  std::vector<Index> m_face_of_point; // refining step: the face of each face point
+  std::vector<Index> m_edge_of_pair;  // refining step: the cut edge of each pair p1, p2
   std::vector<halfedge_descriptor>
-    m_border_halfedge_of_border_face; // refining step: its border edge, as a face halfedge
+    m_halfedge_of_pair; // refining step: that edge, as the halfedge of its first face, from p1 to p2
 };
 
 } // namespace Subdiv

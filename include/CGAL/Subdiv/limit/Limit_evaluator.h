@@ -223,8 +223,9 @@ private:
     if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
       const auto m = mask<PolygonMesh, FT>();
       using M = std::decay_t<decltype(m)>;
-      static_assert(internal::Takes_sharpness_tags<M>::value,
-                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
+      static_assert(internal::Limit_takes_sharpness_tags<M>::value,
+                    "the limit of this scheme does not take sharpness tags (edge_sharpness_map, "
+                    "vertex_sharpness_map) yet");
       if constexpr(internal::Has_crease_curve<M>::value) {
         tags.check(mesh, m, who);
         rows = internal::Limit_rows<FT>(num_vertices(mesh));

@@ -84,22 +84,31 @@ public:
   template <class Vertex, class Accumulator>
   void polyline_edge_point(Vertex before, Vertex a, Vertex b, Vertex after, Vertex none, Accumulator& acc) const
   {
-    for(const auto& term : m_odd) {
-      const FT& w = term.second;
-      CGAL_precondition(term.first >= -1 && term.first <= 2);
-      if(term.first == 0 || term.first == 1) {
-        acc.add(term.first == 0 ? a : b, w);
-        continue;
-      }
-      const Vertex beyond = term.first < 0 ? before : after;
-      if(beyond != none) {
-        acc.add(beyond, w);
-        continue;
-      }
-      const Vertex end = term.first < 0 ? a : b, other = term.first < 0 ? b : a;
-      acc.add(end, FT(2) * w); // 2 end - other
-      acc.add(other, -w);
+    for(const auto& term : m_odd)
+      add_polyline_vertex(term.first, term.second, before, a, b, after, none, acc);
+  }
+
+  /// adds `w` times the vertex at `offset` (-1 to 2) along the polyline
+  /// (`before`, a, b, `after`) of `polyline_edge_point`, continued by point
+  /// reflection where `before` or `after` is `none`: the one place of that
+  /// end rule (the sqrt3 schemes' ternary border rules use it too)
+  template <class Vertex, class Accumulator>
+  static void add_polyline_vertex(int offset, const FT& w, Vertex before, Vertex a, Vertex b, Vertex after, Vertex none,
+                                  Accumulator& acc)
+  {
+    CGAL_precondition(offset >= -1 && offset <= 2);
+    if(offset == 0 || offset == 1) {
+      acc.add(offset == 0 ? a : b, w);
+      return;
     }
+    const Vertex beyond = offset < 0 ? before : after;
+    if(beyond != none) {
+      acc.add(beyond, w);
+      return;
+    }
+    const Vertex end = offset < 0 ? a : b, other = offset < 0 ? b : a;
+    acc.add(end, FT(2) * w); // 2 end - other
+    acc.add(other, -w);
   }
 
   /// the even and odd masks, by increasing offset

@@ -4,6 +4,7 @@
 #define CGAL_SUBDIV_MASKS_INTERPOLATING_SQRT3_MASK_H
 
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/number_type_config.h> // CGAL_PI
@@ -67,12 +68,24 @@ namespace Subdiv {
  * All rules are rational, so exact in an exact kernel, except the one-ring
  * rule at valences other than 6.
  *
+ * Creases (`edge_sharpness_map`, `vertex_sharpness_map` of `subdivide()`),
+ * infinitely sharp values only, as `Sqrt3_mask` takes them: a sharp edge is
+ * refined as a border edge on both of its sides, with the border's ternary
+ * 4-point rule along the polyline of sharp edges, continued by point
+ * reflection where it ends (at a corner or at the end of a dart's edge). In
+ * the face rules a corner with a sharp edge (a dart, crease or corner
+ * vertex) counts as a border corner, and the opposite vertex across a sharp
+ * edge is reflected as across a border edge, so that no stencil reaches
+ * across a crease. Old vertices stay where they are, tags or not.
+ *
  * \tparam Mesh a model of `FaceGraph` whose faces are triangles
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (made by `subdivide()`)
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Interpolating_sqrt3_mask
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Interpolating_sqrt3_mask : public With_sharp_level<Interpolating_sqrt3_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -83,11 +96,14 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   /// the same rules for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Interpolating_sqrt3_mask<OtherMesh, OtherFT> rebind() const
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Interpolating_sqrt3_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Interpolating_sqrt3_mask<OtherMesh, OtherFT>();
+    return Interpolating_sqrt3_mask<OtherMesh, OtherFT, OtherTagged>();
   }
+
+  /// the sharpness tags it takes are infinitely sharp ones
+  static constexpr bool takes_semi_sharp_tags = false;
 
   std::string name() const { return "interpolating sqrt3 (Labsik-Greiner)"; }
   bool is_interpolating() const { return true; }
@@ -140,9 +156,11 @@ public:
     bool all_regular = true;
     int irregular = 0;
     for(int k = 0; k < 3; ++k) {
-      const Vertex_view<Mesh> corner = f.corner(h[k]);
+      // the view of the mask's level: without tags a corner has a rule other
+      // than smooth on the border only; with them, where it has a sharp edge
+      const Vertex_view<Mesh> corner = vertex_view(*this, mesh, target(h[k], mesh));
       valence[k] = corner.valence();
-      border[k] = corner.on_border();
+      border[k] = corner.rule() != Vertex_rule::smooth;
       all_regular = all_regular && !border[k] && valence[k] == 6;
       irregular += !border[k] && valence[k] != 6;
     }
@@ -155,11 +173,12 @@ public:
           one_ring_rule(mesh, h[k], valence[k], share, acc);
       return;
     }
-    // border rule: corners 4/9, opposite vertices (or their reflection) -1/9
+    // border rule: corners 4/9, opposite vertices (or their reflection across
+    // a border or sharp edge) -1/9
     for(int k = 0; k < 3; ++k) {
       acc.add(target(h[k], mesh), FT(4) / FT(9));
       const halfedge_descriptor o = opposite(h[k], mesh);
-      if(!is_border(o, mesh)) {
+      if(!edge_view(*this, mesh, h[k]).sharp()) {
         acc.add(target(next(o, mesh), mesh), -FT(1) / FT(9));
       } else { // reflection source + target - apex
         acc.add(source(h[k], mesh), -FT(1) / FT(9));
@@ -169,24 +188,17 @@ public:
     }
   }
 
-  /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge `h`
-  /// of a border edge, on a refining step
+  /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge
+  /// `e.halfedge()` of a border edge (with tags: of a sharp edge, along its
+  /// polyline of sharp edges), on a refining step
   template <class Accumulator>
   void border_edge_node(const Edge_view<Mesh>& e, int k, Accumulator& acc) const
   {
-    const Mesh& mesh = e.mesh();
-    const halfedge_descriptor h = e.halfedge();
-    const halfedge_descriptor b = opposite(h, mesh); // border halfedge, from s to t
-    vertex_descriptor t = source(h, mesh), s = target(h, mesh);
-    vertex_descriptor beyond_t = target(next(b, mesh), mesh), beyond_s = source(prev(b, mesh), mesh);
-    if(k == 2) { // mirror
-      std::swap(t, s);
-      std::swap(beyond_t, beyond_s);
-    }
-    acc.add(beyond_t, -FT(5) / FT(81));
-    acc.add(t, FT(60) / FT(81));
-    acc.add(s, FT(30) / FT(81));
-    acc.add(beyond_s, -FT(4) / FT(81));
+    const internal::Curve_edge<Mesh> c(*this, e, k);
+    Border_curve_rule<FT>::add_polyline_vertex(-1, -FT(5) / FT(81), c.before, c.a, c.b, c.after, c.none, acc);
+    Border_curve_rule<FT>::add_polyline_vertex(0, FT(60) / FT(81), c.before, c.a, c.b, c.after, c.none, acc);
+    Border_curve_rule<FT>::add_polyline_vertex(1, FT(30) / FT(81), c.before, c.a, c.b, c.after, c.none, acc);
+    Border_curve_rule<FT>::add_polyline_vertex(2, -FT(4) / FT(81), c.before, c.a, c.b, c.after, c.none, acc);
   }
 
 private:

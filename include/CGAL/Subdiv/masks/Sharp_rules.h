@@ -8,6 +8,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <utility>
+
 namespace CGAL {
 namespace Subdiv {
 namespace internal {
@@ -36,7 +38,103 @@ private:
   FT m_scale;
 };
 
+/*
+ * The vertex of the polyline of sharp edges beyond `v`, an end of the sharp
+ * edge of `h`, under the tags of `level`: the other end of v's other sharp
+ * edge where v has the crease rule (two sharp edges), and `null_vertex()`
+ * where the polyline ends at v (a corner, or the end of a dart's edge).
+ */
+template <class Level, class Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor crease_beyond(
+  const Level& level, const Mesh& mesh, typename boost::graph_traits<Mesh>::vertex_descriptor v,
+  typename boost::graph_traits<Mesh>::halfedge_descriptor h)
+{
+  const Vertex_view<Mesh> view = level.vertex_view(v);
+  if(view.rule() != Vertex_rule::crease)
+    return boost::graph_traits<Mesh>::null_vertex();
+  const auto out = edge(view.crease_out(0), mesh) == edge(h, mesh) ? view.crease_out(1) : view.crease_out(0);
+  return target(out, mesh);
+}
+
+/*
+ * The polyline around the border or sharp edge of `e` that the ternary
+ * border rules of the sqrt3 schemes read (`Border_curve_rule::
+ * add_polyline_vertex`), seen from the end that new vertex k (k = 1, 2, at
+ * k/3 of the way along `e.halfedge()`, a face halfedge) is nearer to: `a` is
+ * source(e.halfedge()) for k = 1 and its target for k = 2, `b` the other end,
+ * `before` the polyline's vertex beyond a and `after` the one beyond b. The
+ * polyline is the border loop for a mask without tags, the polyline of sharp
+ * edges for a tagged one (`crease_beyond`; `none` where it ends).
+ */
+template <class Mesh>
+struct Curve_edge
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+
+  vertex_descriptor before, a, b, after;
+  vertex_descriptor none = boost::graph_traits<Mesh>::null_vertex();
+
+  template <class Mask>
+  Curve_edge(const Mask& mask, const Edge_view<Mesh>& e, int k)
+  {
+    const Mesh& mesh = e.mesh();
+    const auto h = e.halfedge();
+    a = source(h, mesh);
+    b = target(h, mesh);
+    if constexpr(Refines_with_tags<Mask>::value) {
+      before = crease_beyond(*mask.sharp_level(), mesh, a, h);
+      after = crease_beyond(*mask.sharp_level(), mesh, b, h);
+    } else {
+      (void)mask;
+      const auto g = opposite(h, mesh); // the border halfedge, from b to a
+      before = target(next(g, mesh), mesh);
+      after = source(prev(g, mesh), mesh);
+    }
+    if(k == 2) { // mirror
+      std::swap(a, b);
+      std::swap(before, after);
+    }
+  }
+};
+
 } // namespace internal
+
+/*!
+ * \ingroup PkgSubdivMasks
+ * The base of a mask that refines with the sharpness tags of a level and
+ * whose crease rules are its own (the sqrt3 schemes, whose border rules are
+ * ternary): it gives the members through which `subdivide()` hands the mask
+ * the tags of each level (`with_sharp_level()`, `sharp_level()`), as
+ * `With_sharp_rules` does for the masks built on `Sharp_rules`.
+ *
+ * \tparam Mask the mask (CRTP), with `rebind<Mesh, FT, true>()`
+ * \tparam Tagged whether the mask refines with the tags of a level
+ */
+template <class Mask, class Mesh, class FT, bool Tagged>
+class With_sharp_level
+{
+public:
+  /// whether the views of the mask come from the sharpness tags of a level
+  static constexpr bool refines_with_tags = Tagged;
+
+  /// the sharpness tags of the level being refined (tagged masks only)
+  const internal::Sharp_level<Mesh, FT>* sharp_level() const { return m_level; }
+
+  /// the same rules with the sharpness tags of a level (a tagged mask)
+  auto with_sharp_level(const internal::Sharp_level<Mesh, FT>* level) const
+  {
+    auto mask = static_cast<const Mask&>(*this).template rebind<Mesh, FT, true>();
+    using Tagged_mask = decltype(mask);
+    static_cast<With_sharp_level<Tagged_mask, Mesh, FT, true>&>(mask).m_level = level;
+    return mask;
+  }
+
+private:
+  const internal::Sharp_level<Mesh, FT>* m_level = nullptr;
+
+  template <class, class, class, bool>
+  friend class With_sharp_level;
+};
 
 /*!
  * \ingroup PkgSubdivMasks

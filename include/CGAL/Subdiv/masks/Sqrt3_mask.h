@@ -4,6 +4,7 @@
 #define CGAL_SUBDIV_MASKS_SQRT3_MASK_H
 
 #include <CGAL/Subdiv/internal/mesh_traits.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/cosines.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -34,12 +35,26 @@ namespace Subdiv {
  *   (4 u + 19 v + 4 w) / 27. On a resting step border vertices stay where
  *   they are. These are the rules of CGAL's `Sqrt3_mask_3`.
  *
+ * Creases (`edge_sharpness_map`, `vertex_sharpness_map` of `subdivide()`):
+ * infinitely sharp values only (0, or 10 and above; a semi-sharp value is
+ * refused, naming the edge or the vertex). A sharp edge is refined as a
+ * border edge on both of its sides (`Sqrt3_split`: not flipped, trisected on
+ * the steps that refine the border, with the border rules above along the
+ * polyline of sharp edges), and a crease vertex (two sharp edges) moves by
+ * the border vertex rule along it on those steps. The polyline ends at a
+ * corner (a sharp vertex, or three sharp edges or more), which stays where
+ * it is, and at the end of a dart's edge; beyond an end it is continued by
+ * point reflection (`Border_curve_rule::add_polyline_vertex`), so the third
+ * next to an end is at (2 t + s) / 3. A dart follows the interior rule.
+ *
  * \tparam Mesh a model of `FaceGraph` whose faces are triangles
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (made by `subdivide()`)
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Sqrt3_mask
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Sqrt3_mask : public With_sharp_level<Sqrt3_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -50,11 +65,14 @@ public:
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
 
   /// the same rules for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Sqrt3_mask<OtherMesh, OtherFT> rebind() const
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Sqrt3_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Sqrt3_mask<OtherMesh, OtherFT>();
+    return Sqrt3_mask<OtherMesh, OtherFT, OtherTagged>();
   }
+
+  /// the sharpness tags it takes are infinitely sharp ones
+  static constexpr bool takes_semi_sharp_tags = false;
 
   std::string name() const { return "sqrt3 (Kobbelt)"; }
   bool is_interpolating() const { return false; }
@@ -89,41 +107,43 @@ public:
       acc.add(u, third);
   }
 
-  /// border vertex on a step that leaves the border alone: kept
+  /// border vertex (with tags: crease or corner vertex) on a step that
+  /// leaves the border alone: kept
   template <class Accumulator>
   void resting_border_vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
     acc.add(view.vertex(), FT(1));
   }
 
-  /// border vertex on a refining step
+  /// border vertex on a refining step (with tags: crease vertex, along its
+  /// two sharp edges; a corner stays)
   template <class Accumulator>
   void border_vertex_node(const Vertex_view<Mesh>& view, Accumulator& acc) const
   {
     const Mesh& mesh = view.mesh();
-    const halfedge_descriptor h = view.border_in();
-    acc.add(source(h, mesh), FT(4) / FT(27));
-    acc.add(target(h, mesh), FT(19) / FT(27));
-    acc.add(target(next(h, mesh), mesh), FT(4) / FT(27));
+    if(view.rule() == Vertex_rule::corner) {
+      acc.add(view.vertex(), FT(1));
+      return;
+    }
+    // the crease's two sharp edges; on the border, its border edges, in the order of the border loop
+    const bool border = view.on_border();
+    const vertex_descriptor u = border ? source(view.border_in(), mesh) : target(view.crease_out(0), mesh);
+    const vertex_descriptor w = border ? target(view.border_out(), mesh) : target(view.crease_out(1), mesh);
+    acc.add(u, FT(4) / FT(27));
+    acc.add(view.vertex(), FT(19) / FT(27));
+    acc.add(w, FT(4) / FT(27));
   }
 
   /// the new vertex at k/3 (k = 1, 2) of the way along the face halfedge
-  /// `e.halfedge()` of a border edge, on a refining step
+  /// `e.halfedge()` of a border edge (with tags: of a sharp edge, along its
+  /// polyline of sharp edges), on a refining step
   template <class Accumulator>
   void border_edge_node(const Edge_view<Mesh>& e, int k, Accumulator& acc) const
   {
-    const Mesh& mesh = e.mesh();
-    const halfedge_descriptor h = e.halfedge();
-    const halfedge_descriptor b = opposite(h, mesh); // border halfedge, from s to t
-    vertex_descriptor t = source(h, mesh), s = target(h, mesh);
-    vertex_descriptor beyond_t = target(next(b, mesh), mesh);
-    if(k == 2) { // mirror
-      std::swap(t, s);
-      beyond_t = source(prev(b, mesh), mesh);
-    }
-    acc.add(t, FT(16) / FT(27));
-    acc.add(s, FT(10) / FT(27));
-    acc.add(beyond_t, FT(1) / FT(27));
+    const internal::Curve_edge<Mesh> c(*this, e, k);
+    Border_curve_rule<FT>::add_polyline_vertex(0, FT(16) / FT(27), c.before, c.a, c.b, c.after, c.none, acc);
+    Border_curve_rule<FT>::add_polyline_vertex(1, FT(10) / FT(27), c.before, c.a, c.b, c.after, c.none, acc);
+    Border_curve_rule<FT>::add_polyline_vertex(-1, FT(1) / FT(27), c.before, c.a, c.b, c.after, c.none, acc);
   }
 };
 

@@ -4,6 +4,7 @@
 #define CGAL_SUBDIV_MASKS_BUTTERFLY_WEIGHTS_H
 
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/cosines.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -109,17 +110,9 @@ void crease_edge_point(const Level& level, const Border_curve_rule<FT>& curve, c
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   const Mesh& mesh = e.mesh();
   const auto h = e.on_border() ? e.border_halfedge() : e.halfedge();
-  const vertex_descriptor none = boost::graph_traits<Mesh>::null_vertex();
-  // the polyline's vertex beyond v, away from the edge of h
-  const auto beyond = [&](vertex_descriptor v) {
-    const Vertex_view<Mesh> view = level.vertex_view(v);
-    if(view.rule() != Vertex_rule::crease)
-      return none;
-    const auto out = edge(view.crease_out(0), mesh) == edge(h, mesh) ? view.crease_out(1) : view.crease_out(0);
-    return target(out, mesh);
-  };
   const vertex_descriptor a = source(h, mesh), b = target(h, mesh);
-  curve.polyline_edge_point(beyond(a), a, b, beyond(b), none, acc);
+  curve.polyline_edge_point(crease_beyond(level, mesh, a, h), a, b, crease_beyond(level, mesh, b, h),
+                            boost::graph_traits<Mesh>::null_vertex(), acc);
 }
 
 } // namespace internal

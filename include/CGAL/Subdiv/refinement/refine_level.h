@@ -389,7 +389,7 @@ template <class Mesh, class Mask, class Points, class... Sinks>
 void refine_level(Mesh& mesh, const Mask& mask, const Points& points, const Parallel_loop& loop, Sinks&... sinks)
 {
   static_assert(std::is_same<typename Mask::Polygon_mesh, Mesh>::value, "the mask is for another mesh type");
-  const Host_of<Mask> host(mesh);
+  const Host_of<Mask> host = make_host(mesh, mask);
   (sinks.read(host, mask, loop), ...);
   const auto level = write_level(mesh, host, mask, points, loop);
   (sinks.write(level), ...);

@@ -297,8 +297,8 @@ template <class FT, class PolygonMesh, class Mask, class Tags>
 Stencil_table<FT> compose_on_host(const PolygonMesh& mesh, const Mask& mask, const Tags& tags,
                                   const Stencil_table<FT>* coarse, std::size_t sources, const Parallel_loop& loop)
 {
-  const Host_of<Mask> host(mesh);
   return tags.on_level(mesh, mask, [&](const auto& level_mask) {
+    const Host_of<Mask> host = make_host(mesh, level_mask);
     return internal::compose_level<FT>(host, level_mask, host.numbering(), coarse, sources, loop);
   });
 }

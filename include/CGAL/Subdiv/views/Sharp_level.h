@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -120,9 +121,16 @@ public:
   /// are not both sharp on the next level: its sharpness, as in OpenSubdiv
   FT edge_weight(std::size_t e) const { return FT(m_edge[e]); }
 
+  /// whether edge e (ordinal) is sharp on this level (a border edge, or a tag above 0)
+  bool is_sharp_edge(std::size_t e) const { return Rules::is_sharp(m_edge[e]); }
+
   /// the sharpness of new edge k of an edge split (k < 2 num_edges: a half of
   /// an old edge; the other new edges are smooth)
   S child_edge(std::size_t k) const { return k < m_child_half.size() ? m_child_half[k] : S(0); }
+  /// the sharpness of a child of edge e of a split that does not halve it (the
+  /// sqrt3 split keeps it or cuts it in three): e's, one level down, for the
+  /// infinitely sharp values that those schemes take
+  S child_of_edge(std::size_t e) const { return Rules::decrement(m_edge[e]); }
   /// the sharpness of new vertex j (j < num_vertices: the child of an old
   /// vertex; the other new vertices are smooth)
   S child_vertex(std::size_t j) const { return j < m_vertex.size() ? Rules::decrement(m_vertex[j]) : S(0); }
@@ -203,6 +211,15 @@ private:
   std::vector<FT> m_vertex_weight;
 };
 
+/// whether a host names the old edge of every new edge (`edge_parents()`):
+/// the hosts whose new edges are not an edge split's halves and new edges
+template <class Host, class = void>
+struct Has_edge_parents : std::false_type
+{};
+template <class Host>
+struct Has_edge_parents<Host, std::void_t<decltype(std::declval<const Host&>().edge_parents())>> : std::true_type
+{};
+
 /*
  * A sink of `refine_level` (refinement/refine_level.h): after the level, puts
  * the sharpness of every new edge in `edges` and of every new vertex in
@@ -225,6 +242,8 @@ public:
   {
     m_new_edges = host.number_of_new_edges();
     m_new_vertices = host.number_of_new_vertices();
+    if constexpr(Has_edge_parents<Host>::value)
+      m_parents = host.edge_parents();
   }
 
   template <class Level>
@@ -232,7 +251,7 @@ public:
   {
     if constexpr(!std::is_same<EdgeMap, CGAL::internal_np::Param_not_found>::value)
       for(std::size_t k = 0; k < m_new_edges; ++k)
-        put(*m_edges, level.edge(k, *m_mesh), value<EdgeMap>(m_level->child_edge(k)));
+        put(*m_edges, level.edge(k, *m_mesh), value<EdgeMap>(child_edge(k)));
     if constexpr(!std::is_same<VertexMap, CGAL::internal_np::Param_not_found>::value) {
       const auto& vertices = level.elements().vertices;
       for(std::size_t j = 0; j < m_new_vertices; ++j)
@@ -241,6 +260,16 @@ public:
   }
 
 private:
+  // the sharpness of new edge k: of an edge split's half, or of the child of
+  // the old edge the host names (`edge_parents()`: 0 for none, e + 1 for e)
+  auto child_edge(std::size_t k) const
+  {
+    if(m_parents.empty())
+      return m_level->child_edge(k);
+    using S = decltype(m_level->child_edge(k));
+    return m_parents[k] == 0 ? S(0) : m_level->child_of_edge(m_parents[k] - 1);
+  }
+
   template <class Map, class S>
   static typename boost::property_traits<Map>::value_type value(const S& s)
   {
@@ -257,6 +286,7 @@ private:
   const VertexMap* m_vertices;
   std::size_t m_new_edges = 0;
   std::size_t m_new_vertices = 0;
+  std::vector<std::size_t> m_parents; // hosts with `edge_parents()` only
 };
 
 } // namespace internal
