@@ -379,6 +379,37 @@ foreach(scheme IN ITEMS butterfly modified-butterfly)
       CONTAINS "1 1 1" "1 -1 -1" "-1 1 -1" "-1 -1 1" "1 0 0" "0 1 0" "0 0 1" "0 0 -1" "0 -1 0" "-1 0 0")
   endforeach()
 endforeach()
+# sqrt3 with creases: --sharp-angle 60 makes the 6 edges of the tetrahedron
+# sharp and its 4 vertices corners. The first level rests the creases (the
+# corners stay, 4 face points), the second trisects every edge with the
+# border rule, its ends reflected, which on a straight edge between corners
+# gives its thirds (2 t + s) / 3 with either scheme; the 18 thirds are written
+# back as creases. Without the tags sqrt3 would move the corners, and neither
+# scheme would keep the edges
+string(REPEAT "t crease 2/1/0 [0-9]+ [0-9]+ 10\n" 18 crease_thirds)
+set(third_sqrt3 "v 1 0.33333333333333331 0.33333333333333331\n")
+set(third_interpolating-sqrt3 "v 0.99999999999999978 0.33333333333333337 0.33333333333333337\n")
+foreach(scheme IN ITEMS sqrt3 interpolating-sqrt3)
+  string(REPLACE "-" "_" name "${scheme}")
+  subdiv_cli_test(surface_creases_${name} ARGS surface ${tetra} -o @WORK@/out.obj --scheme ${scheme} --levels 2
+    --sharp-angle 60
+    OUTPUT @WORK@/out.obj VERTICES 20 FACES 36
+    CONTAINS "v 1 1 1" "v 1 -1 -1" "v -1 1 -1" "v -1 -1 1"
+    FILE @WORK@/out.obj FILE_REGEX "${third_${scheme}}.*\nt creasemethod 0/0/1 normal\n${crease_thirds}$")
+endforeach()
+# OpenSubdiv's subdivided icosahedron with 17 infinitely sharp edges and a
+# corner, two sqrt3 levels (V + F, then V + F again: a crease edge adds two
+# points where its two faces lose theirs): its 51 thirds and the corner are
+# written back; the semi-sharp twin and --limit with tags are refused
+string(REPEAT "t crease 2/1/0 [0-9]+ [0-9]+ 10\n" 51 icos_thirds)
+subdiv_cli_test(surface_sqrt3_infsharp ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_infsharp.obj
+  -o @WORK@/out.obj --scheme sqrt3 --levels 2
+  OUTPUT @WORK@/out.obj VERTICES 368 FACES 720 FILE @WORK@/out.obj
+  FILE_REGEX "\nt creasemethod 0/0/1 normal\n${icos_thirds}t corner 1/1/0 4 10\n$")
+subdiv_surface_error(surface_sqrt3_semisharp 1 "'[^']*loop_icos_semisharp.obj' line 63: tag 'corner': the sharpness 2\\.50* is semi-sharp: --scheme sqrt3 takes 0 or 10 and above only"
+  ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_semisharp.obj ${mesh_out} --scheme sqrt3 --levels 1)
+subdiv_surface_error(surface_sqrt3_limit_with_tags 1 "--scheme interpolating-sqrt3 refines with crease and corner tags, but its limit \\(--limit, --displace\\) does not take them yet"
+  ARGS surface ${tetra} ${mesh_out} --scheme interpolating-sqrt3 --levels 1 --sharp-angle 60 --limit)
 # OpenSubdiv's icosahedron with infinitely sharp creases and corners, refined
 # by the modified butterfly, writes the children's tags; its semi-sharp twin is
 # refused by the butterflies, naming the line
