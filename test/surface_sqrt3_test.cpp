@@ -799,3 +799,47 @@ TYPED_TEST(Sqrt3_creases, a_corner_ends_the_crease)
   const std::vector<PE> through = points_of(no_corner);
   EXPECT_EQ(std::count(through.begin(), through.end(), next_to_corner(s, s2)), 0);
 }
+
+// A closed mesh with a crease has a phase too: on the icosahedron with the
+// crease loop around vertex 0 (its link, 5 edges), the first level rests and
+// the second trisects the loop as the border of the cap it bounds (the 5
+// faces at vertex 0, cut out and refined without tags); one level and one
+// level are two levels, and the counts are V + F at each level.
+TYPED_TEST(Sqrt3_creases, a_closed_mesh_with_a_crease_has_a_phase)
+{
+  Exact_mesh mesh = read<Exact_mesh>("cgal/icosahedron.off");
+  auto sharpness = mesh.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  const Exact_mesh::Vertex_index apex(0);
+  Exact_mesh cap;
+  std::map<Exact_mesh::Vertex_index, Exact_mesh::Vertex_index> in_cap;
+  in_cap[apex] = cap.add_vertex(mesh.point(apex));
+  for(auto h : CGAL::halfedges_around_target(apex, mesh)) {
+    const auto u = mesh.source(h);
+    in_cap[u] = cap.add_vertex(mesh.point(u));
+    sharpness[mesh.edge(mesh.prev(h))] = FT(10); // the edge of the face of h opposite the apex
+  }
+  for(auto f : CGAL::faces_around_target(mesh.halfedge(apex), mesh)) {
+    std::vector<Exact_mesh::Vertex_index> corners;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.push_back(in_cap.at(v));
+    cap.add_face(corners);
+  }
+  ASSERT_EQ(num_faces(cap), 5u);
+  Exact_mesh twice = mesh;
+  refine_creased<TypeParam>(mesh, 1);
+  EXPECT_EQ(num_vertices(mesh), 12u + 20u);
+  EXPECT_EQ(crease_points(mesh).size(), 5u);
+  refine_creased<TypeParam>(mesh, 1);
+  EXPECT_EQ(num_vertices(mesh), 32u + 60u);
+  EXPECT_TRUE(mesh.is_valid(false));
+  refine_creased<TypeParam>(twice, 2);
+  EXPECT_TRUE(same_mesh(mesh, twice));
+  S::subdivide(cap, TypeParam(), S::parameters::number_of_iterations(2));
+  std::vector<PE> border;
+  for(auto v : vertices(cap))
+    if(cap.is_border(v))
+      border.push_back(cap.point(v));
+  std::sort(border.begin(), border.end());
+  ASSERT_EQ(border.size(), 15u);
+  EXPECT_EQ(crease_points(mesh), border);
+}

@@ -278,7 +278,8 @@ private:
   }
 
 public:
-  /// whether this step refines the border (always false on a closed mesh)
+  /// whether this step refines the border (and the creases; always false on
+  /// a closed mesh without creases)
   bool refines_border() const { return m_refine_border; }
 
   std::size_t number_of_new_vertices() const

@@ -393,7 +393,7 @@ struct Takes_sharpness_tags<Mask, std::void_t<decltype(std::declval<const Mask&>
 
 /// whether the mask takes semi-sharp tags (Loop, Catmull-Clark, the linear
 /// masks), or infinitely sharp ones only (its `takes_semi_sharp_tags` is
-/// false: the butterflies)
+/// false: the butterflies and the sqrt3 schemes)
 template <class Mask, class = void>
 struct Takes_semi_sharp_tags : std::true_type
 {};
@@ -410,7 +410,7 @@ struct Limit_takes_sharpness_tags
   : std::integral_constant<bool, Takes_sharpness_tags<Mask>::value && Mask::split != Split::sqrt3>
 {};
 
-/// whether the mask is a tagged copy (`With_sharp_rules`): its views come
+/// whether the mask is a tagged copy (`With_sharp_rules`, `With_sharp_level`): its views come
 /// from the tags of its level
 template <class Mask, class = void>
 struct Refines_with_tags : std::false_type
