@@ -642,6 +642,20 @@ std::vector<PE> crease_points(Exact_mesh& mesh)
   return points;
 }
 
+// the points of the border of `mesh` after two levels of `Mask` without
+// tags (a resting step, then one that refines the border), sorted
+template <class Mask>
+std::vector<PE> border_after_two_levels(Exact_mesh mesh)
+{
+  S::subdivide(mesh, Mask(), S::parameters::number_of_iterations(2));
+  std::vector<PE> border;
+  for(auto v : vertices(mesh))
+    if(mesh.is_border(v))
+      border.push_back(mesh.point(v));
+  std::sort(border.begin(), border.end());
+  return border;
+}
+
 } // namespace
 
 // both sqrt3 schemes: their border rules are ternary (Kobbelt's cubic
@@ -666,12 +680,7 @@ TYPED_TEST(Sqrt3_creases, a_crease_is_refined_as_the_border_of_the_disk_it_bound
   EXPECT_EQ(crease_points(mesh).size(), 12u); // the resting step keeps the crease
   refine_creased<TypeParam>(mesh, 1);
   EXPECT_TRUE(mesh.is_valid(false));
-  S::subdivide(disk, TypeParam(), S::parameters::number_of_iterations(2));
-  std::vector<PE> border;
-  for(auto v : vertices(disk))
-    if(disk.is_border(v))
-      border.push_back(disk.point(v));
-  std::sort(border.begin(), border.end());
+  const std::vector<PE> border = border_after_two_levels<TypeParam>(disk);
   ASSERT_EQ(border.size(), 36u);
   EXPECT_EQ(crease_points(mesh), border);
   std::size_t sharp = 0;
@@ -834,12 +843,7 @@ TYPED_TEST(Sqrt3_creases, a_closed_mesh_with_a_crease_has_a_phase)
   EXPECT_TRUE(mesh.is_valid(false));
   refine_creased<TypeParam>(twice, 2);
   EXPECT_TRUE(same_mesh(mesh, twice));
-  S::subdivide(cap, TypeParam(), S::parameters::number_of_iterations(2));
-  std::vector<PE> border;
-  for(auto v : vertices(cap))
-    if(cap.is_border(v))
-      border.push_back(cap.point(v));
-  std::sort(border.begin(), border.end());
+  const std::vector<PE> border = border_after_two_levels<TypeParam>(cap);
   ASSERT_EQ(border.size(), 15u);
   EXPECT_EQ(crease_points(mesh), border);
 }
