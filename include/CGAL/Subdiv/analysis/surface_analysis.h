@@ -462,6 +462,13 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
     result.status = Analysis_status::no_convergence;
     return result;
   }
+  // a sharp vertex: the crease curve's 1/2, 1/4, 1/8 may be defective (a
+  // Jordan block with a side's equal eigenvalue), which a double solver finds
+  // to about sqrt(machine epsilon) only; they are confirmed exactly first, as
+  // for curves (up to 64 x 64)
+  if constexpr(!std::is_floating_point<FT>::value)
+    if(where.sharp())
+      internal::snap_dyadic_eigenvalues(result.matrix, result.eigenvalues, 64);
   internal::confirm_rational_eigenvalues(result.matrix, result.eigenvalues, result.exact_eigenvalues);
   const auto& ev = result.eigenvalues;
   if(ev.size() < 2)
