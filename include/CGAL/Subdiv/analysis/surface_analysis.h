@@ -132,7 +132,8 @@ struct Surface_analysis
     int faces = 0;                                 ///< faces k on this side
     std::vector<std::complex<double>> eigenvalues; ///< of the side's block, sorted as `eigenvalues`
     /// the side's eigenvalues are those of the border analysis of k faces
-    /// (tolerance 1e-8): the side is refined as a border with k faces
+    /// (the same multiset, tolerance 1e-6): the side is refined as a border
+    /// with k faces
     bool same_as_border = false;
     bool c1_necessary = false;         ///< the border analysis's
     bool extended_spectrum_ok = false; ///< the border analysis's
@@ -272,9 +273,19 @@ void analyse_crease_sides(const std::vector<int>& side, const Border& border, Su
         block(a, b) = D(kept[a], kept[b]);
     one.eigenvalues = sorted_eigenvalues(block);
     const auto border_analysis = border(one.faces);
-    one.same_as_border = one.eigenvalues.size() == border_analysis.eigenvalues.size();
-    for(std::size_t k = 0; one.same_as_border && k < one.eigenvalues.size(); ++k)
-      one.same_as_border = std::abs(one.eigenvalues[k] - border_analysis.eigenvalues[k]) < 1e-8;
+    // the same multiset, each eigenvalue matched with the nearest unmatched
+    // one: 1e-6, since a defective eigenvalue (a Jordan block) is found to
+    // about sqrt(machine epsilon) only, and not always in the same order
+    std::vector<std::complex<double>> unmatched = border_analysis.eigenvalues;
+    one.same_as_border = one.eigenvalues.size() == unmatched.size();
+    for(std::size_t k = 0; one.same_as_border && k < one.eigenvalues.size(); ++k) {
+      std::size_t nearest = 0;
+      for(std::size_t j = 1; j < unmatched.size(); ++j)
+        if(std::abs(unmatched[j] - one.eigenvalues[k]) < std::abs(unmatched[nearest] - one.eigenvalues[k]))
+          nearest = j;
+      one.same_as_border = std::abs(unmatched[nearest] - one.eigenvalues[k]) < 1e-6;
+      unmatched.erase(unmatched.begin() + static_cast<std::ptrdiff_t>(nearest));
+    }
     one.c1_necessary = border_analysis.c1_necessary;
     one.extended_spectrum_ok = border_analysis.extended_spectrum_ok;
     one.characteristic_map = border_analysis.characteristic_map;
