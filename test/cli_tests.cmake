@@ -628,6 +628,9 @@ subdiv_analyse_json(loop_border_2 loop_border2 analyse --scheme loop --valence 2
 subdiv_analyse_json(catmull_clark_border_5 catmull_clark_border5 analyse --scheme catmull-clark --valence 5 --boundary --json)
 subdiv_analyse_json(doo_sabin_5 doo_sabin5 analyse --scheme doo-sabin --valence 5 --json)
 subdiv_analyse_json(doo_sabin_border_4 doo_sabin_border4 analyse --scheme doo-sabin --valence 4 --boundary --json)
+subdiv_analyse_json(catmull_clark_crease_1_3 catmull_clark_crease_1_3 analyse --scheme catmull-clark --crease 1,3 --json)
+subdiv_analyse_json(loop_dart_5 loop_dart5 analyse --scheme loop --dart 5 --json)
+subdiv_analyse_json(loop_corner_6 loop_corner6 analyse --scheme loop --corner 6 --json)
 subdiv_analyse_json(bspline_3 bspline3 analyse --scheme bspline --degree 3 --json)
 subdiv_analyse_json(four_point_w_1_5 four_point_tense analyse --scheme four-point --w 1/5 --json)
 subdiv_analyse_json(bezier_3 bezier analyse --scheme bezier --json)
@@ -666,6 +669,32 @@ subdiv_cli_error(analyse_boundary_for_curve 2 "--boundary applies to surface sch
 subdiv_cli_error(analyse_degree_for_surface 2 "--degree applies to bspline and bezier only"
   ARGS analyse --scheme loop --valence 6 --degree 3)
 subdiv_cli_error(analyse_positional 2 "unexpected argument 'loop'" ARGS analyse loop)
+# sharp vertices (infinitely sharp tags): the table of a crease, side by side
+subdiv_cli_test(analyse_catmull_clark_crease ARGS analyse --scheme catmull-clark --crease 2,3
+  STDOUT_REGEX "^Catmull-Clark \\(catmull-clark\\) at a crease vertex with 2 and 3 faces on its sides\n.*eigenvalues +1, 0.5796823261, 0.5 \\(1/2\\) \\(x2\\), 0.4100970508, 0.25 \\(1/4\\) \\(x3\\).*block triangular +yes.*side 1 +2 faces: .*C1 yes\n  side 2 +3 faces: .*C1 yes\n.*  C1 +yes\n  limit mask, centre +2/3\n  limit mask, others +1/6 0 0 0 1/6 0 0 0 0 0 ")
+subdiv_cli_test(analyse_catmull_clark_corner ARGS analyse --scheme catmull-clark --corner 5
+  STDOUT_REGEX "at a corner \\(vertex sharpness 10\\) of valence 5\n.*subdominant +0.6545084972, multiplicity 1.*  C1 +no\n  limit mask, centre +1\n  limit mask, others +0 0 0 0 0 0 0 0 0 0 ")
+subdiv_cli_error(analyse_crease_side_zero 1 "--crease K1,K2: the faces on each side must be between 1 and 8, got 0"
+  ARGS analyse --scheme loop --crease 0,3)
+subdiv_cli_error(analyse_crease_side_too_large 1 "--crease K1,K2: the faces on each side must be between 1 and 8, got 9"
+  ARGS analyse --scheme catmull-clark --crease 2,9)
+subdiv_cli_error(analyse_loop_crease_1_1 1 "--crease 1,1: an interior vertex of valence 2 in a triangle mesh"
+  ARGS analyse --scheme loop --crease 1,1)
+subdiv_cli_error(analyse_crease_malformed 2 "--crease expects K1,K2 \\(the faces on each side, two whole numbers\\), got '3'"
+  ARGS analyse --scheme loop --crease 3)
+subdiv_cli_error(analyse_dart_too_large 1 "--dart N: the valence must be between 3 and 16, got 17"
+  ARGS analyse --scheme loop --dart 17)
+subdiv_cli_error(analyse_corner_too_small 1 "--corner N: the valence must be between 3 and 16, got 2"
+  ARGS analyse --scheme catmull-clark --corner 2)
+subdiv_cli_error(analyse_dart_not_a_number 2 "--dart expects a whole number, got 'five'"
+  ARGS analyse --scheme loop --dart five)
+subdiv_cli_error(analyse_dart_for_sqrt3 2 "--dart applies to loop, loop-warren and catmull-clark"
+  ARGS analyse --scheme sqrt3 --dart 5)
+subdiv_cli_error(analyse_corner_for_curve 2 "--corner applies to surface schemes only" ARGS analyse --scheme chaikin --corner 5)
+subdiv_cli_error(analyse_two_configurations 2 "--crease, --dart and --corner each give a configuration: give one"
+  ARGS analyse --scheme loop --dart 5 --corner 5)
+subdiv_cli_error(analyse_dart_and_valence 2 "no --valence or --boundary with them"
+  ARGS analyse --scheme loop --dart 5 --valence 5)
 
 # the demo prints the analysis summary and writes it into index.md
 subdiv_cli_test(demo_analysis_summary ARGS demo --output-dir @WORK@/demo TIMEOUT 60

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Copyright (c) 2026 CGAL Subdiv contributors
 //
-// cgal-subdiv analyse --scheme S [--valence N [--boundary]] [--degree K]
+// cgal-subdiv analyse --scheme S [--valence N [--boundary] | --crease K1,K2 | --dart N | --corner N] [--degree K]
 //                     [--a A --b B] [--w W] [--json]
 #include "analyse_schemes.h"
 #include "args.h"
@@ -12,12 +12,14 @@
 #include <complex>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace cgal_subdiv {
 namespace {
 
 const char* const analyse_help = R"(usage: cgal-subdiv analyse --scheme SCHEME [--valence N [--boundary]]
+                           [--crease K1,K2 | --dart N | --corner N]
                            [--degree K] [--a A --b B] [--w W] [--json]
 
 Eigen-analysis of a subdivision scheme, from its own masks, in exact rational
@@ -42,6 +44,13 @@ the smoothness verdict and the limit mask.
                     from a border vertex with N faces: its vertex face, a
                     border N-gon, for N >= 3, a border quad for N = 2, a
                     corner face for N = 1)
+  --crease K1,K2    instead of --valence (loop, loop-warren, catmull-clark):
+                    an interior vertex on an infinitely sharp crease, with K1
+                    faces on one side and K2 on the other, 1 <= K1, K2 <= 8
+                    (loop: not 1,1); judged side by side, each side as a
+                    border vertex with as many faces
+  --dart N          a dart of valence N, 3 <= N <= 16: a crease ends there
+  --corner N        a corner of valence N, 3 <= N <= 16: vertex sharpness 10
   --degree K        bspline and bezier (default 3)
   --a A, --b B      corner-cutting, 0 < A < B < 1 (default 1/4, 3/4)
   --w W             four-point tension, 0 <= W < 1/4 (default 1/16)
@@ -58,15 +67,18 @@ tangent masks, and the limit mask checked by refinement.
 Curves: eigenvalues, limit mask over the invariant window, C^k and Holder
 bound by the difference-scheme method, predicted convergence rate.
 
-Exit status: 0 on success; 1 if the configuration cannot be analysed (valence
-out of range, border vertex of a scheme analysed inside only, linear, a
-parameter out of range); 2 for a malformed command line (unknown option or
-scheme, missing --scheme or --valence, --valence for a curve scheme). Errors
+Exit status: 0 on success; 1 if the configuration cannot be analysed (valence,
+crease sides, dart or corner valence out of range, border vertex of a scheme
+analysed inside only, linear, a parameter out of range); 2 for a malformed
+command line (unknown option or scheme, missing --scheme or --valence,
+--valence for a curve scheme, a malformed --crease, two configurations,
+--crease, --dart or --corner for a scheme without sharpness tags). Errors
 are one line on stderr: "cgal-subdiv: error: ...".
 )";
 
 const std::vector<Option_spec> analyse_options = {
-  {{"--scheme"}, true}, {{"--valence"}, true}, {{"--boundary"}, false}, {{"--degree"}, true},     {{"--a"}, true},
+  {{"--scheme"}, true}, {{"--valence"}, true}, {{"--boundary"}, false}, {{"--crease"}, true},
+  {{"--dart"}, true},   {{"--corner"}, true},  {{"--degree"}, true},    {{"--a"}, true},
   {{"--b"}, true},      {{"--w"}, true},       {{"--json"}, false},     {{"-h", "--help"}, false}};
 
 const char* const curve_keywords[] = {"bezier", "bspline", "chaikin", "corner-cutting", "four-point"};
@@ -159,13 +171,51 @@ std::string weight_text(const Surface_summary& s, std::size_t label)
   return s.exact ? format_exact(s.limit_mask[label]) : number_text(s.limit_mask_double[label]);
 }
 
+namespace S = CGAL::Subdiv;
+
+std::string vertex_kind_name(const S::Configuration& where)
+{
+  switch(where.kind) {
+    case S::Vertex_kind::interior:
+      return "interior";
+    case S::Vertex_kind::border:
+      return "border";
+    case S::Vertex_kind::crease:
+      return "crease";
+    case S::Vertex_kind::dart:
+      return "dart";
+    case S::Vertex_kind::corner:
+      return "corner";
+  }
+  return "unknown";
+}
+
+// the rows of a crease's sides (`Surface_summary::sides`)
+void print_sides(const Surface_summary& s, std::ostream& out)
+{
+  row(out, "block triangular", yes_no(s.block_triangular) + " (the crease reads the crease only, no side the other)");
+  for(std::size_t i = 0; i < s.sides.size(); ++i) {
+    const Surface_summary::Side& side = s.sides[i];
+    row(out, "side " + std::to_string(i + 1),
+        std::to_string(side.faces) + (side.faces == 1 ? " face" : " faces") + ": the border's spectrum " +
+          yes_no(side.same_as_border) + ", C1 necessary " + yes_no(side.c1_necessary) + ", characteristic map " +
+          side.characteristic_map + ", C1 " + yes_no(side.c1));
+  }
+}
+
 void print_surface_table(const Surface_summary& s, std::ostream& out)
 {
-  const std::string where = s.boundary && s.face_centred
-                              ? "the border face made from a border vertex with " + std::to_string(s.valence) + " faces"
-                            : s.boundary     ? "a border vertex with " + std::to_string(s.valence) + " faces"
-                            : s.face_centred ? "an interior face with " + std::to_string(s.valence) + " corners"
-                                             : "an interior vertex of valence " + std::to_string(s.valence);
+  const S::Configuration& c = s.configuration;
+  const std::string where =
+    c.kind == S::Vertex_kind::crease ? "a crease vertex with " + std::to_string(c.first_side) + " and " +
+                                         std::to_string(c.second_side()) + " faces on its sides"
+    : c.kind == S::Vertex_kind::dart   ? "a dart of valence " + std::to_string(s.valence)
+    : c.kind == S::Vertex_kind::corner ? "a corner (vertex sharpness 10) of valence " + std::to_string(s.valence)
+    : s.boundary && s.face_centred
+      ? "the border face made from a border vertex with " + std::to_string(s.valence) + " faces"
+    : s.boundary     ? "a border vertex with " + std::to_string(s.valence) + " faces"
+    : s.face_centred ? "an interior face with " + std::to_string(s.valence) + " corners"
+                     : "an interior vertex of valence " + std::to_string(s.valence);
   out << s.name << " (" << s.scheme << ") at " << where << "\n";
   row(out, "neighbourhood",
       std::to_string(s.rings) + (s.rings == 1 ? " ring, " : " rings, ") + std::to_string(s.ring.size()) +
@@ -177,11 +227,17 @@ void print_surface_table(const Surface_summary& s, std::ostream& out)
   row(out, "1 simple and dominant", yes_no(s.one_is_simple_and_dominant));
   row(out, "subdominant", complex_text(s.subdominant) + ", multiplicity " + std::to_string(s.subdominant_multiplicity));
   row(out, "C1 necessary condition",
-      yes_no(s.c1_necessary) +
-        (s.boundary ? " (lambda1 >= lambda2 > |lambda3|, both real)" : " (lambda1 = lambda2 real > |lambda3|)"));
-  row(out, "extended spectrum",
-      std::string(s.extended_spectrum_ok ? "ok" : "not ok") + " (" + std::to_string(s.extended_rings) +
-        " rings: largest other |lambda| " + number_text(s.extended_largest_other) + ")");
+      yes_no(s.c1_necessary) + (c.kind == S::Vertex_kind::crease     ? " (both sides, below)"
+                                : c.kind != S::Vertex_kind::interior ? " (lambda1 >= lambda2 > |lambda3|, both real)"
+                                                                     : " (lambda1 = lambda2 real > |lambda3|)"));
+  if(c.kind == S::Vertex_kind::crease)
+    print_sides(s, out);
+  row(
+    out, "extended spectrum",
+    std::string(s.extended_spectrum_ok ? "ok" : "not ok") +
+      (c.kind == S::Vertex_kind::crease ? std::string(" (both sides', as borders)")
+                                        : " (" + std::to_string(s.extended_rings) + " rings: largest other |lambda| " +
+                                            number_text(s.extended_largest_other) + ")"));
   std::string map = s.characteristic_map;
   if(s.characteristic_map_levels > 0 && s.characteristic_map != "not_applicable")
     map += " (" + std::to_string(s.characteristic_map_levels) + " levels, annulus of rings " +
@@ -264,6 +320,21 @@ const char* json_bool(bool b)
   return b ? "true" : "false";
 }
 
+// a crease's sides: [{"faces": k, "same_as_border": ..., "c1_necessary": ..., "characteristic_map": ..., "c1": ...}, ...]
+std::string json_sides(const Surface_summary& s)
+{
+  std::string text = "[";
+  for(std::size_t i = 0; i < s.sides.size(); ++i) {
+    const Surface_summary::Side& side = s.sides[i];
+    text += std::string(i ? ", " : "") + "{\"faces\": " + std::to_string(side.faces) +
+            ", \"same_as_border\": " + json_bool(side.same_as_border) +
+            ", \"c1_necessary\": " + json_bool(side.c1_necessary) +
+            ", \"characteristic_map\": " + json_string(side.characteristic_map) + ", \"c1\": " + json_bool(side.c1) +
+            "}";
+  }
+  return text + "]";
+}
+
 void print_surface_json(const Surface_summary& s, std::ostream& out)
 {
   std::string weights;
@@ -273,6 +344,8 @@ void print_surface_json(const Surface_summary& s, std::ostream& out)
       << "  \"scheme\": " << json_string(s.scheme) << ",\n"
       << "  \"valence\": " << s.valence << ",\n"
       << "  \"boundary\": " << json_bool(s.boundary) << ",\n"
+      << "  \"vertex\": " << json_string(vertex_kind_name(s.configuration)) << ",\n"
+      << "  \"sides\": " << json_sides(s) << ",\n"
       << "  \"eigenvalues\": " << json_eigenvalues(s.eigenvalues) << ",\n"
       << "  \"subdominant\": " << json_complex(s.subdominant) << ",\n"
       << "  \"subdominant_multiplicity\": " << s.subdominant_multiplicity << ",\n"
@@ -355,6 +428,32 @@ Scheme_spec parse_curve_spec(const Parsed_args& args, const std::string& name)
   return spec;
 }
 
+// the sharp configuration of --crease K1,K2, --dart N or --corner N (at most one), if any
+std::optional<S::Configuration> sharp_configuration(const Parsed_args& args)
+{
+  int given = 0;
+  for(const char* option : {"--crease", "--dart", "--corner"})
+    given += args.has(option) ? 1 : 0;
+  if(given > 1)
+    throw Usage_error("--crease, --dart and --corner each give a configuration: give one");
+  if(args.has("--dart"))
+    return S::Configuration::dart(args.integer("--dart", 0));
+  if(args.has("--corner"))
+    return S::Configuration::corner(args.integer("--corner", 0));
+  if(!args.has("--crease"))
+    return std::nullopt;
+  const std::string value = args.value("--crease");
+  const std::size_t comma = value.find(',');
+  const auto whole = [&](const std::string& text) {
+    if(text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage_error("--crease expects K1,K2 (the faces on each side, two whole numbers), got '" + value + "'");
+    return std::stoi(text);
+  };
+  if(comma == std::string::npos)
+    whole("");
+  return S::Configuration::crease(whole(value.substr(0, comma)), whole(value.substr(comma + 1)));
+}
+
 } // namespace
 
 int analyse_command(const std::vector<std::string>& arguments)
@@ -375,6 +474,8 @@ int analyse_command(const std::vector<std::string>& arguments)
     if(args.has("--valence"))
       throw Usage_error("--valence applies to surface schemes only (a curve scheme has no extraordinary points)");
     require_applicable(args, "--boundary", false, "surface schemes");
+    for(const char* option : {"--crease", "--dart", "--corner"})
+      require_applicable(args, option, false, "surface schemes");
     const Scheme_spec spec = parse_curve_spec(args, name);
     const Curve_summary summary = analyse_curve(spec);
     if(json)
@@ -388,9 +489,19 @@ int analyse_command(const std::vector<std::string>& arguments)
     require_applicable(args, "--a", false, "corner-cutting");
     require_applicable(args, "--b", false, "corner-cutting");
     require_applicable(args, "--w", false, "four-point");
-    if(!args.has("--valence") && name != "linear")
+    const Surface_scheme_facts* facts = find_analysable_surface_scheme(name);
+    const std::optional<S::Configuration> sharp = sharp_configuration(args);
+    if(sharp) {
+      if(args.has("--valence") || args.has("--boundary"))
+        throw Usage_error("--crease, --dart and --corner give the configuration: no --valence or --boundary with them");
+      for(const char* option : {"--crease", "--dart", "--corner"})
+        require_applicable(args, option, facts && facts->sharp_analysis,
+                           "loop, loop-warren and catmull-clark (the schemes that take sharpness tags)");
+    }
+    if(!sharp && !args.has("--valence") && name != "linear")
       throw Usage_error("missing --valence N (the valence of the vertex to analyse)");
-    const Surface_summary summary = analyse_surface(name, args.integer("--valence", 0), args.has("--boundary"));
+    const Surface_summary summary = sharp ? analyse_sharp_vertex(name, *sharp)
+                                          : analyse_surface(name, args.integer("--valence", 0), args.has("--boundary"));
     if(json)
       print_surface_json(summary, out);
     else

@@ -11,6 +11,8 @@
 
 #include "common.h"
 
+#include <CGAL/Subdiv/analysis/Configuration.h>
+
 #include <complex>
 #include <string>
 #include <utility>
@@ -26,6 +28,7 @@ struct Surface_scheme_facts
   bool dual = false;   ///< centred at a face (Doo-Sabin)
   bool interpolating = false;
   bool border_analysis = false; ///< border vertices are analysed
+  bool sharp_analysis = false;  ///< crease, dart and corner vertices are analysed (the scheme takes sharpness tags)
 };
 
 /// the surface schemes analyse_surface() accepts, in the order of the tables
@@ -43,6 +46,7 @@ struct Surface_summary
   std::string name;   ///< the mask's name()
   int valence = 0;
   bool boundary = false;
+  CGAL::Subdiv::Configuration configuration; ///< where: its kind, and a crease's sides
   bool face_centred = false;
   int rings = 0;
   std::vector<int> ring; ///< ring of every label
@@ -65,7 +69,20 @@ struct Surface_summary
   std::vector<double> tangent_mask[2];
   int host_levels = 0, cropped_levels = 0;
   double host_error = -1, limit_error = -1;
+  /// a crease: `block_triangular` and its two sides (`Surface_analysis::Side`)
+  bool block_triangular = false;
+  struct Side
+  {
+    int faces = 0;
+    bool same_as_border = false, c1_necessary = false, c1 = false;
+    std::string characteristic_map;
+  };
+  std::vector<Side> sides;
 };
+
+/// the ranges of the sharp configurations `cgal-subdiv analyse` and the tables take
+constexpr int max_crease_side = 8;
+constexpr int min_sharp_valence = 3, max_sharp_valence = 16;
 
 /// the largest valence (or number of border faces) `cgal-subdiv analyse` accepts
 constexpr int max_analysed_valence = 32;
@@ -81,6 +98,16 @@ constexpr int max_analysed_valence = 32;
  */
 Surface_summary analyse_surface(const std::string& keyword, int valence, bool boundary, bool characteristic_map = true,
                                 bool verify_limit = true);
+
+/*
+ * analyses the surface scheme `keyword` at a crease, dart or corner vertex
+ * (`where.sharp()`), with OpenSubdiv's infinitely sharp tags.
+ * \throws Usage_error for an unknown keyword, Input_error for a scheme without
+ *         sharpness tags or a configuration out of the ranges above (the
+ *         message names the option: --crease, --dart, --corner)
+ */
+Surface_summary analyse_sharp_vertex(const std::string& keyword, const CGAL::Subdiv::Configuration& where,
+                                     bool characteristic_map = true, bool verify_limit = true);
 
 /// `CGAL::Subdiv::Curve_analysis<Exact_rational>` without the template
 struct Curve_summary

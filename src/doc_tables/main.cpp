@@ -37,6 +37,7 @@ using subdiv_doc_tables::Rule;
 using subdiv_doc_tables::Rule_term;
 
 constexpr int first_valence = 3, last_valence = 16, last_border = 8;
+using cgal_subdiv::max_crease_side;
 
 // ------------------------------------------------------------------ numbers
 
@@ -208,6 +209,8 @@ struct Scheme_tables
   std::string name;
   std::vector<Surface_summary> interior, border;
   std::vector<std::vector<Rule>> interior_rules, border_rules; // by configuration
+  // sharp vertices (schemes with sharpness tags): creases by (k1, k2), darts and corners by valence
+  std::vector<Surface_summary> crease, dart, corner;
 };
 
 int regular_valence(const Scheme_tables& t)
@@ -358,6 +361,82 @@ void write_scheme(const Scheme_tables& t, Output& out)
                   "k");
   if(t.border.empty())
     md << "Border vertices: not analysed.\n";
+  if(t.crease.empty())
+    return;
+  md << "\n## Sharp vertices (infinitely sharp tags)\n\n"
+     << "OpenSubdiv's rules (`Sdc::Crease`), taken from the mask through `Sharpness_tags` as `subdivide()` "
+     << "takes them, on a patch whose sharp edges are sharp along their whole ray (so the configuration is the "
+     << "same on every level). Semi-sharp values are not analysed: their sharpness decays with the level, so no "
+     << "stationary local matrix exists. See doc/sharp_features.md.\n\n"
+     << "### Crease vertices with k1 and k2 faces on their sides\n\n"
+     << "A crease is judged side by side: its matrix is block triangular (the crease rows read the crease only, "
+     << "neither side reads the other), each side's block has the spectrum of the border with as many faces "
+     << "(checked), and takes that border analysis's verdicts; the crease is C1 on both sides when both are. "
+     << "Verdicts, k1 down, k2 across:\n\n| k1 \\ k2 |";
+  for(int k2 = 1; k2 <= max_crease_side; ++k2)
+    md << " " << k2 << " |";
+  md << "\n|---:|";
+  for(int k2 = 1; k2 <= max_crease_side; ++k2)
+    md << "---|";
+  md << "\n";
+  const auto crease_at = [&](int k1, int k2) -> const Surface_summary* {
+    for(const Surface_summary& s : t.crease)
+      if(s.configuration.first_side == k1 && s.configuration.second_side() == k2)
+        return &s;
+    return nullptr;
+  };
+  for(int k1 = 1; k1 <= max_crease_side; ++k1) {
+    md << "| " << k1 << " |";
+    for(int k2 = 1; k2 <= max_crease_side; ++k2) {
+      const Surface_summary* s = crease_at(k1, k2);
+      md << " " << (s == nullptr ? "-" : s->c1 ? "C1" : "not C1") << " |";
+    }
+    md << "\n";
+  }
+  md << "\n(-: an interior vertex of valence 2 in a triangle mesh, which no patch holds.)\n\n"
+     << "| k1, k2 | size | lambda1 | leading eigenvalues | block triangular | sides' spectra = borders' | "
+     << "limit mask | check | verdict |\n|---|---:|---:|---|---|---|---|---|---|\n";
+  for(const Surface_summary& s : t.crease) {
+    bool borders = s.sides.size() == 2;
+    for(const Surface_summary::Side& side : s.sides)
+      borders = borders && side.same_as_border;
+    md << "| " << s.configuration.first_side << ", " << s.configuration.second_side() << " | " << s.ring.size() << " | "
+       << complex_text(s.subdominant) << " | " << leading_eigenvalues(s, 6) << " | " << yes_no(s.block_triangular)
+       << " | " << yes_no(borders) << " | " << rule_text(limit_rule(s), false) << " | " << check_text(s) << " | **"
+       << (s.c1 ? "C1" : "not C1") << "** |\n";
+  }
+  md << "\n";
+  analysis_tables(t.dart, "Eigen-analysis at darts of valence n (a crease ends at the vertex)", "n");
+  analysis_tables(t.corner, "Eigen-analysis at corners of valence n (vertex sharpness 10, smooth edges)", "n");
+}
+
+// the sharp vertices of every scheme that has them, one row per configuration
+void write_sharp_csv(const std::vector<Scheme_tables>& all, Output& out)
+{
+  std::ostringstream& csv = out.file("surface_sharp.csv");
+  csv << csv_row({"scheme", "vertex", "valence", "k1", "k2", "size", "exact", "lambda1_re", "lambda1_im",
+                  "multiplicity", "abs_lambda3", "block_triangular", "sides_are_borders", "c1_necessary",
+                  "characteristic_map", "c1", "limit_centre"});
+  for(const Scheme_tables& t : all)
+    for(const auto* configs : {&t.crease, &t.dart, &t.corner})
+      for(const Surface_summary& s : *configs) {
+        const bool crease = !s.sides.empty();
+        bool borders = s.sides.size() == 2;
+        for(const Surface_summary::Side& side : s.sides)
+          borders = borders && side.same_as_border;
+        csv << csv_row({s.scheme,
+                        configs == &t.crease ? "crease"
+                        : configs == &t.dart ? "dart"
+                                             : "corner",
+                        std::to_string(s.valence), crease ? std::to_string(s.configuration.first_side) : "",
+                        crease ? std::to_string(s.configuration.second_side()) : "", std::to_string(s.ring.size()),
+                        s.exact ? "1" : "0", num(s.subdominant.real()), num(s.subdominant.imag()),
+                        std::to_string(s.subdominant_multiplicity),
+                        num(s.eigenvalues.size() > 3 ? std::abs(s.eigenvalues[3]) : 0.0),
+                        crease ? (s.block_triangular ? "1" : "0") : "", crease ? (borders ? "1" : "0") : "",
+                        s.c1_necessary ? "1" : "0", s.characteristic_map, s.c1 ? "1" : "0",
+                        s.limit_mask.empty() ? "" : num(s.limit_mask_double[0])});
+      }
 }
 
 void write_surface_csv(const std::vector<Scheme_tables>& all, Output& out)
@@ -679,7 +758,11 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "vertices with 1.." << last_border
      << " faces (Doo-Sabin: the border faces made from them); the test decides C1, not higher smoothness (the "
      << "B-spline based schemes are C2 at regular points, which this analysis does not test). Curve "
-     << "smoothness is proven by the difference-scheme method (a lower bound).\n\n"
+     << "smoothness is proven by the difference-scheme method (a lower bound). The schemes that take "
+     << "OpenSubdiv's sharpness tags (loop, loop-warren, catmull-clark) are also analysed at sharp vertices, "
+     << "with infinitely sharp tags: crease vertices with 1.." << max_crease_side << " faces on either side, "
+     << "darts and corners of valence " << cgal_subdiv::min_sharp_valence << ".." << cgal_subdiv::max_sharp_valence
+     << " (on their pages, and `surface_sharp.csv`).\n\n"
      << "## Overview\n\n|";
   for(const std::string& h : overview_header)
     md << " " << h << " |";
@@ -705,6 +788,7 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "Machine-readable: `overview.csv`, `surface_analysis.csv` (one row per scheme and configuration), "
      << "`surface_eigenvalues.csv`, `surface_masks.csv` (limit and tangent masks by label), "
      << "`surface_rules.csv` (every rule weight by label, with the exact fraction where rational), "
+     << "`surface_sharp.csv` (one row per sharp vertex configuration), "
      << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`.\n";
 }
 
@@ -737,12 +821,24 @@ int main(int argc, char** argv)
           t.border.push_back(cgal_subdiv::analyse_surface(facts.keyword, k, true));
           t.border_rules.push_back(subdiv_doc_tables::read_rules(facts.keyword, k, true));
         }
+      if(facts.sharp_analysis) {
+        for(int k1 = 1; k1 <= max_crease_side; ++k1)
+          for(int k2 = 1; k2 <= max_crease_side; ++k2)
+            if(k1 + k2 > 2 || facts.split == "quad split") // a triangle mesh has no interior valence 2
+              t.crease.push_back(
+                cgal_subdiv::analyse_sharp_vertex(facts.keyword, CGAL::Subdiv::Configuration::crease(k1, k2)));
+        for(int n = cgal_subdiv::min_sharp_valence; n <= cgal_subdiv::max_sharp_valence; ++n) {
+          t.dart.push_back(cgal_subdiv::analyse_sharp_vertex(facts.keyword, CGAL::Subdiv::Configuration::dart(n)));
+          t.corner.push_back(cgal_subdiv::analyse_sharp_vertex(facts.keyword, CGAL::Subdiv::Configuration::corner(n)));
+        }
+      }
       t.name = t.interior.front().name;
       write_scheme(t, out);
       all.push_back(std::move(t));
       std::cerr << "subdiv-doc-tables: " << facts.keyword << " done\n";
     }
     write_surface_csv(all, out);
+    write_sharp_csv(all, out);
     std::vector<Overview_row> curves;
     write_curves(out, curves);
     write_overview(all, curves, out);

@@ -55,7 +55,8 @@ std::vector<Rule> rules_of(int n, bool boundary)
   using Mask = MaskTemplate<Mesh, Exact>;
   using Traits = S::Host_of<Mask>;
   const Mask mask;
-  const SI::Patch patch = SI::analysis_patch(mask, n, boundary, patch_rings + 2);
+  const SI::Patch patch = SI::analysis_patch(
+    mask, S::Configuration(n, boundary ? S::Vertex_kind::border : S::Vertex_kind::interior), patch_rings + 2);
   const SI::Labelling labels = SI::label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, patch_rings);
   const Mesh& mesh = patch.mesh;
   const auto h = patch.start;

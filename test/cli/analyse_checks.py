@@ -5,7 +5,7 @@ import json
 import math
 import sys
 
-SURFACE_FIELDS = ["scheme", "valence", "boundary", "eigenvalues", "subdominant", "subdominant_multiplicity",
+SURFACE_FIELDS = ["scheme", "valence", "boundary", "vertex", "sides", "eigenvalues", "subdominant", "subdominant_multiplicity",
                   "c1_necessary", "characteristic_map", "c1", "limit_mask", "exact"]
 CURVE_FIELDS = ["scheme", "parameters", "window", "eigenvalues", "subdominant", "c1_necessary", "limit_mask",
                 "converges", "c_infinity", "smoothness", "holder", "c1", "predicted_rate", "exact"]
@@ -24,6 +24,9 @@ def check_surface_shape(d):
     assert d["subdominant"] == d["eigenvalues"][1], (d["subdominant"], d["eigenvalues"][1])
     assert d["characteristic_map"] in ("regular_injective", "not_regular", "not_injective", "not_applicable")
     assert near(d["limit_mask"]["center"] + sum(d["limit_mask"]["weights"]), 1, 1e-12)
+    assert d["vertex"] in ("interior", "border", "crease", "dart", "corner")
+    assert (d["vertex"] == "border") == d["boundary"]
+    assert (len(d["sides"]) == 2) == (d["vertex"] == "crease"), d["sides"]
 
 
 def loop(d, n):
@@ -136,6 +139,44 @@ def bezier(d):
     assert list(d.keys()) == CURVE_FIELDS
     assert d["c_infinity"] is True and d["smoothness"] is None and d["holder"] is None and d["c1"] is True
     assert d["eigenvalues"] == [[1, 0], [0.5, 0], [0.25, 0], [0.125, 0]]
+
+
+def catmull_clark_crease_1_3(d):
+    # a crease with 1 face on one side and 3 on the other: the crease curve is
+    # the cubic B-spline (limit 1/6, 2/3, 1/6 on labels 1, 0, 3; eigenvalues
+    # 1/2, 1/4); each side is refined as a border with as many faces, and the
+    # border with 1 face is not C1 (1/4 ties with the next eigenvalue)
+    check_surface_shape(d)
+    assert d["scheme"] == "catmull-clark" and d["valence"] == 4 and d["vertex"] == "crease"
+    assert d["exact"] is True
+    w = d["limit_mask"]["weights"]
+    assert near(d["limit_mask"]["center"], 2 / 3, 1e-16) and near(w[0], 1 / 6, 1e-16) and near(w[2], 1 / 6, 1e-16), w
+    assert all(x == 0 for i, x in enumerate(w) if i not in (0, 2)), w
+    assert [0.5, 0] in d["eigenvalues"] and [0.25, 0] in d["eigenvalues"], d["eigenvalues"]
+    assert [s["faces"] for s in d["sides"]] == [1, 3], d["sides"]
+    assert all(s["same_as_border"] for s in d["sides"]), d["sides"]
+    assert [s["c1"] for s in d["sides"]] == [False, True], d["sides"]
+    assert d["c1"] is False
+
+
+def loop_dart5(d):
+    # a dart of valence 5: the smooth valence-5 subdominant 3/8 + cos(2 pi/5)/4
+    # stays (simple), a larger one comes with the crease; C1
+    check_surface_shape(d)
+    assert d["scheme"] == "loop" and d["valence"] == 5 and d["vertex"] == "dart" and d["sides"] == []
+    smooth = 3 / 8 + math.cos(2 * math.pi / 5) / 4
+    assert near(d["eigenvalues"][2][0], smooth), d["eigenvalues"]
+    assert d["subdominant"][0] > smooth + 1e-3 and d["subdominant_multiplicity"] == 1
+    assert d["c1_necessary"] is True and d["characteristic_map"] == "regular_injective" and d["c1"] is True
+
+
+def loop_corner6(d):
+    # a corner of valence 6 keeps its point; 5/8 then 1/2 twice: no C1
+    check_surface_shape(d)
+    assert d["vertex"] == "corner" and d["valence"] == 6
+    assert d["limit_mask"]["center"] == 1 and all(w == 0 for w in d["limit_mask"]["weights"])
+    assert d["subdominant"] == [0.625, 0] and d["eigenvalues"][2] == [0.5, 0] and d["eigenvalues"][3] == [0.5, 0]
+    assert d["c1_necessary"] is False and d["c1"] is False
 
 
 CASES = {name: f for name, f in globals().items() if callable(f) and name not in

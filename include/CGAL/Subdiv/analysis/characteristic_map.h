@@ -265,7 +265,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result,
   result.extended_rings = big;
   result.characteristic_map = Characteristic_map_verdict::not_applicable;
   result.characteristic_map_levels = result.annulus_inner = result.annulus_outer = 0;
-  const auto extended = local_matrix_of_rings(mask, result.valence, result.boundary, big);
+  const auto extended = local_matrix_of_rings(mask, result.configuration, big);
   require(extended.invariant, "the extended neighbourhood is not invariant");
   const Eigen::MatrixXd S = extended.S;
   Eigen::EigenSolver<Eigen::MatrixXd> solver(S, true);
@@ -328,7 +328,7 @@ bool characteristic_map_with_rings(const DoubleMask& mask, Result& result,
     return true;
   }
   // the planar control net, then refinement by the real host with the double mask
-  Patch patch = analysis_patch(mask, result.valence, result.boundary, big);
+  Patch patch = analysis_patch(mask, result.configuration, big);
   const Labelling labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, big);
   CGAL_assertion_msg(
     labels.size() == static_cast<std::size_t>(S.rows()) && labels.size() == patch.mesh.number_of_vertices(),

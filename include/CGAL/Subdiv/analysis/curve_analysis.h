@@ -186,9 +186,9 @@ inline void snap_eigenvalues(std::vector<std::complex<double>>& values, double t
 // growing rationals.
 template <class FT>
 void snap_dyadic_eigenvalues(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S,
-                             std::vector<std::complex<double>>& values)
+                             std::vector<std::complex<double>>& values, Eigen::Index max_rows = 32)
 {
-  if(S.rows() > 32)
+  if(S.rows() > max_rows)
     return;
   FT lambda(1);
   for(int j = 0; j <= 3; ++j, lambda = lambda / FT(2)) {

@@ -63,6 +63,9 @@ struct Surface_analysis
   int valence = 0;    ///< valence n (border: number of faces k; dual: corners of the central face; dual at
                       ///< the border: faces k of the border vertex the central face was made from)
   bool boundary = false;
+  /// the configuration analysed (its kind: interior, border, or a sharp
+  /// vertex: crease, dart, corner)
+  Configuration configuration;
   bool face_centred = false; ///< dual scheme: the neighbourhood is centred at an n-gon
   int rings = 0;             ///< rings of the (smallest invariant) neighbourhood
   std::vector<int> ring;     ///< ring of every label
@@ -95,7 +98,8 @@ struct Surface_analysis
   /// at a border vertex, where the border curve and the interior have their
   /// own eigenvalues, the condition of [Zorin 2000] instead: lambda_1 >=
   /// lambda_2 > |lambda_3|, both real positive (the characteristic map is then
-  /// built from the eigenvectors of lambda_1 and lambda_2)
+  /// built from the eigenvectors of lambda_1 and lambda_2); the same at a
+  /// dart and a corner; at a crease, both sides' (`sides`)
   bool c1_necessary = false;
   /// rings of the larger neighbourhood used for the characteristic map
   int extended_rings = 0;
@@ -112,8 +116,31 @@ struct Surface_analysis
   /// rings [inner, outer] of the annulus that was tested
   int characteristic_map_levels = 0, annulus_inner = 0, annulus_outer = 0;
   /// the final verdict: one_is_simple_and_dominant, c1_necessary,
-  /// extended_spectrum_ok and a regular injective characteristic map
+  /// extended_spectrum_ok and a regular injective characteristic map (a
+  /// crease: see `sides`)
   bool c1 = false;
+  /// a crease vertex: the crease rows (the centre and the vertices on the
+  /// sharp rays) read crease vertices only, and the rows of each side read
+  /// no vertex of the other side, so the matrix is block triangular
+  bool block_triangular = false;
+  /// a crease vertex: each side's block (the crease and that side's
+  /// vertices), side 0 with `configuration.first_side` faces, side 1 with
+  /// the others; the surface is C1 on each side up to the crease when the
+  /// side is, and the two sides meet along the crease curve only
+  struct Side
+  {
+    int faces = 0;                                 ///< faces k on this side
+    std::vector<std::complex<double>> eigenvalues; ///< of the side's block, sorted as `eigenvalues`
+    /// the side's eigenvalues are those of the border analysis of k faces
+    /// (the same multiset, tolerance 1e-6): the side is refined as a border
+    /// with k faces
+    bool same_as_border = false;
+    bool c1_necessary = false;         ///< the border analysis's
+    bool extended_spectrum_ok = false; ///< the border analysis's
+    Characteristic_map_verdict characteristic_map = Characteristic_map_verdict::not_applicable; ///< the border's
+    bool c1 = false;                                                                            ///< the border's
+  };
+  std::vector<Side> sides; ///< a crease: its two sides (empty otherwise)
   /// left eigenvector of 1 normalised to sum 1, by label (exact for exact
   /// FT); empty if 1 is not simple. The limit of the centre is
   /// sum_i limit_mask[i] * p_i.
@@ -182,6 +209,98 @@ void dense_tangent_pair(const Eigen::MatrixXd& D, const std::vector<std::complex
   }
   if(a.size() == m)
     set_tangent_pair(a, b, result);
+}
+
+/*
+ * The side of every label of a crease's neighbourhood of `rings` rings: 0 on
+ * the crease (the centre and the sharp rays), 1 on the first side (between
+ * rays 0 and `first_side` counter-clockwise), 2 on the second; read from the
+ * planar layout of the patch (`build_patch`, `tag_patch`).
+ */
+template <class Mask>
+std::vector<int> crease_sides(const Mask& mask, const Configuration& where, int rings)
+{
+  const Patch patch = analysis_patch(mask, where, rings);
+  const Labelling labels = label_neighbourhood(patch.mesh, patch.start, false, rings);
+  const auto& centre = patch.mesh.point(patch.mesh.source(patch.start));
+  const double two_pi = 2 * 3.14159265358979323846;
+  const double split = two_pi * where.first_side / where.valence;
+  const auto on_ray = [](double x, double y, double angle) {
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    return std::abs(x * dy - y * dx) < 1e-9 && x * dx + y * dy > 0;
+  };
+  std::vector<int> side;
+  for(Analysis_vertex v : labels.vertex_of) {
+    const double x = patch.mesh.point(v).x() - centre.x(), y = patch.mesh.point(v).y() - centre.y();
+    double angle = std::atan2(y, x);
+    if(angle < 0)
+      angle += two_pi;
+    if(std::hypot(x, y) < 1e-12 || on_ray(x, y, 0) || on_ray(x, y, split))
+      side.push_back(0);
+    else
+      side.push_back(angle < split ? 1 : 2);
+  }
+  return side;
+}
+
+/*
+ * A crease's sides (`Surface_analysis::block_triangular`, `sides`): the
+ * block structure of the matrix, and for each side the spectrum of its block
+ * against the border analysis of as many faces (`border`), whose verdicts
+ * the side takes.
+ */
+template <class FT, class Border>
+void analyse_crease_sides(const std::vector<int>& side, const Border& border, Surface_analysis<FT>& result)
+{
+  const Eigen::Index m = result.matrix.rows();
+  result.block_triangular = true;
+  for(Eigen::Index i = 0; i < m; ++i)
+    for(Eigen::Index j = 0; j < m; ++j)
+      if(result.matrix(i, j) != FT(0) && side[j] != 0 && side[j] != side[i])
+        result.block_triangular = false;
+  result.sides.clear();
+  const Eigen::MatrixXd D = to_double_matrix(result.matrix);
+  for(int s = 1; s <= 2; ++s) {
+    typename Surface_analysis<FT>::Side one;
+    one.faces = s == 1 ? result.configuration.first_side : result.configuration.second_side();
+    std::vector<Eigen::Index> kept;
+    for(Eigen::Index i = 0; i < m; ++i)
+      if(side[static_cast<std::size_t>(i)] == 0 || side[static_cast<std::size_t>(i)] == s)
+        kept.push_back(i);
+    Eigen::MatrixXd block(kept.size(), kept.size());
+    for(std::size_t a = 0; a < kept.size(); ++a)
+      for(std::size_t b = 0; b < kept.size(); ++b)
+        block(a, b) = D(kept[a], kept[b]);
+    one.eigenvalues = sorted_eigenvalues(block);
+    const auto border_analysis = border(one.faces);
+    // the same multiset, each eigenvalue matched with the nearest unmatched
+    // one: 1e-6, since a defective eigenvalue (a Jordan block) is found to
+    // about sqrt(machine epsilon) only, and not always in the same order
+    std::vector<std::complex<double>> unmatched = border_analysis.eigenvalues;
+    one.same_as_border = one.eigenvalues.size() == unmatched.size();
+    for(std::size_t k = 0; one.same_as_border && k < one.eigenvalues.size(); ++k) {
+      std::size_t nearest = 0;
+      for(std::size_t j = 1; j < unmatched.size(); ++j)
+        if(std::abs(unmatched[j] - one.eigenvalues[k]) < std::abs(unmatched[nearest] - one.eigenvalues[k]))
+          nearest = j;
+      one.same_as_border = std::abs(unmatched[nearest] - one.eigenvalues[k]) < 1e-6;
+      unmatched.erase(unmatched.begin() + static_cast<std::ptrdiff_t>(nearest));
+    }
+    one.c1_necessary = border_analysis.c1_necessary;
+    one.extended_spectrum_ok = border_analysis.extended_spectrum_ok;
+    one.characteristic_map = border_analysis.characteristic_map;
+    one.c1 = border_analysis.c1;
+    result.sides.push_back(one);
+  }
+  // the crease's verdicts: both sides' (each a border with its faces)
+  const auto& a = result.sides[0];
+  const auto& b = result.sides[1];
+  const bool sides_are_borders = result.block_triangular && a.same_as_border && b.same_as_border;
+  result.c1_necessary = result.one_is_simple_and_dominant && sides_are_borders && a.c1_necessary && b.c1_necessary;
+  result.extended_spectrum_ok = a.extended_spectrum_ok && b.extended_spectrum_ok;
+  result.characteristic_map =
+    a.characteristic_map != Characteristic_map_verdict::regular_injective ? a.characteristic_map : b.characteristic_map;
+  result.c1 = result.c1_necessary && a.c1 && b.c1;
 }
 
 } // namespace internal
@@ -264,6 +383,23 @@ void dense_tangent_pair(const Eigen::MatrixXd& D, const std::vector<std::complex
  * beside them, at every level): the patches are made by refinement, as real
  * meshes have them (`internal::border_face_patch`).
  *
+ * Sharp vertices (`Configuration::crease()`, `dart()`, `corner()`; schemes
+ * that take sharpness tags: Loop, Catmull-Clark): the interior patch carries
+ * infinitely sharp tags (10) along whole rays of edges, or a vertex
+ * sharpness of 10 at a corner, and is refined through `Sharpness_tags` as
+ * `subdivide()` refines a tagged mesh, so the rules are OpenSubdiv's, taken
+ * from the masks. A dart or a corner has no rotational symmetry that would
+ * make lambda_1 = lambda_2: the condition is the border's, lambda_1 >=
+ * lambda_2 > |lambda_3|, and the characteristic map is tested over the whole
+ * neighbourhood as at an interior vertex. A crease vertex is judged by its
+ * sides: its matrix is block triangular (the crease rows read the crease
+ * only, neither side reads the other, `block_triangular`), each side's block
+ * (the crease and that side) is refined as a border with as many faces, which
+ * is checked on its spectrum, and the side takes the verdicts of the border
+ * analysis of as many faces (`sides`); the crease is C1 on both sides when
+ * both are. Semi-sharp tags have no stationary local matrix (their sharpness
+ * decays with the level) and are not analysed.
+ *
  * \tparam FT exact field type of the matrix (default `CGAL::Exact_rational`)
  * \param any_mask the scheme: a mask over any mesh type and number type, with
  *         its options (a tension, a `Border_corners` value, ...); it is rebound
@@ -297,6 +433,7 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
   result.scheme = mask.name();
   result.valence = valence;
   result.boundary = boundary;
+  result.configuration = where;
   result.face_centred = Traits::face_centred;
 
   // 1. the matrix
@@ -336,6 +473,13 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
     result.status = Analysis_status::no_convergence;
     return result;
   }
+  // a sharp vertex: the crease curve's 1/2, 1/4, 1/8 may be defective (a
+  // Jordan block with a side's equal eigenvalue), which a double solver finds
+  // to about sqrt(machine epsilon) only; they are confirmed exactly first, as
+  // for curves (up to 64 x 64)
+  if constexpr(!std::is_floating_point<FT>::value)
+    if(where.sharp())
+      internal::snap_dyadic_eigenvalues(result.matrix, result.eigenvalues, 64);
   internal::confirm_rational_eigenvalues(result.matrix, result.eigenvalues, result.exact_eigenvalues);
   const auto& ev = result.eigenvalues;
   if(ev.size() < 2)
@@ -361,7 +505,7 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
   const bool real_pair =
     ev.size() >= 3 && std::abs(ev[1].imag()) < tol && std::abs(ev[2].imag()) < tol && ev[2].real() > tol;
   const bool gap = ev.size() < 4 || std::abs(ev[3]) < ev[2].real() - tol;
-  if(boundary)
+  if(where.kind != Vertex_kind::interior) // border, sharp: no symmetry makes lambda_1 = lambda_2
     result.c1_necessary = result.one_is_simple_and_dominant && real_pair && gap;
   else
     result.c1_necessary = result.one_is_simple_and_dominant && real_pair && result.subdominant_multiplicity == 2 && gap;
@@ -381,11 +525,21 @@ Surface_analysis<FT> analyse_surface_scheme(const AnyMask& any_mask, const Confi
     internal::dense_tangent_pair(D, ev, result);
   }
 
-  // 4.-6. extended spectrum, characteristic map, verdict
-  if(result.one_is_simple_and_dominant && options.extended_spectrum)
+  // 4.-6. extended spectrum, characteristic map, verdict; a crease by its sides
+  if(where.kind == Vertex_kind::crease) {
+    const auto border = [&](int k) {
+      return analyse_surface_scheme<FT>(any_mask, Configuration(k, Vertex_kind::border),
+                                        parameters::verify_limit(false)
+                                          .characteristic_map(options.characteristic_map)
+                                          .extended_spectrum(options.extended_spectrum)
+                                          .max_faces(options.max_faces));
+    };
+    internal::analyse_crease_sides(internal::crease_sides(mask, where, result.rings), border, result);
+  } else if(result.one_is_simple_and_dominant && options.extended_spectrum)
     internal::characteristic_map_and_extended_spectrum(double_mask, result, options);
-  result.c1 = result.one_is_simple_and_dominant && result.c1_necessary && result.extended_spectrum_ok &&
-              result.characteristic_map == Characteristic_map_verdict::regular_injective;
+  if(where.kind != Vertex_kind::crease)
+    result.c1 = result.one_is_simple_and_dominant && result.c1_necessary && result.extended_spectrum_ok &&
+                result.characteristic_map == Characteristic_map_verdict::regular_injective;
 
   // 7. verification of the limit mask
   if(options.verify_limit && !result.limit_mask.empty() && result.one_is_simple_and_dominant) {

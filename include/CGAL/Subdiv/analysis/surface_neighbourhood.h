@@ -17,6 +17,7 @@
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Row_builder.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
@@ -43,20 +44,49 @@ namespace Subdiv {
 namespace internal {
 
 /*
+ * The sharpness tags of an analysis patch of a sharp configuration
+ * (`tag_patch`): edge and vertex property maps of the mesh, which every
+ * refinement of the patch carries (`refine_recording`).
+ */
+constexpr const char* patch_edge_sharpness = "e:analysis_sharpness";
+constexpr const char* patch_vertex_sharpness = "v:analysis_sharpness";
+
+/*
  * One host step of the real host and mask on `mesh`: returns the refined
  * mesh, and the stencil of every new vertex over the old vertices. New
  * positions are computed in double from the stencils (weights converted).
+ * A patch with sharpness tags (`tag_patch`) is refined as `subdivide()`
+ * refines a tagged mesh: through `Sharpness_tags`, which gives the mask the
+ * rules of the level and writes the children's sharpness into the refined
+ * mesh's maps, so no rule is typed here.
  */
 template <class Mask>
 Analysis_mesh refine_recording(const Analysis_mesh& mesh, const Mask& mask,
                                std::vector<Vertex_stencil<typename Mask::Number_type>>& stencils)
 {
   using Points = std::decay_t<decltype(std::declval<Analysis_mesh&>().points())>;
+  using FT = typename Mask::Number_type;
   Analysis_mesh refined = mesh;
   refined.collect_garbage();
-  Stencil_recorder<Analysis_mesh, typename Mask::Number_type> recorder;
+  Stencil_recorder<Analysis_mesh, FT> recorder;
   const Row_points<Points, decltype(recorder.rows)> points{refined.points(), &recorder.rows};
-  refine_level(refined, mask, points, Parallel_loop(1), recorder);
+  const auto refine_one = [&](const auto& level_mask, auto&... sinks) {
+    refine_level(refined, level_mask, points, Parallel_loop(1), recorder, sinks...);
+  };
+  const auto edges = refined.property_map<Analysis_mesh::Edge_index, double>(patch_edge_sharpness);
+  if(!edges.second) {
+    refine_one(mask);
+  } else if constexpr(Takes_sharpness_tags<Mask>::value) {
+    using Edge_map = Analysis_mesh::Property_map<Analysis_mesh::Edge_index, double>;
+    using Vertex_map = Analysis_mesh::Property_map<Analysis_mesh::Vertex_index, double>;
+    const auto vertices = refined.property_map<Analysis_mesh::Vertex_index, double>(patch_vertex_sharpness);
+    CGAL_assertion(vertices.second);
+    const Sharpness_tags<Analysis_mesh, FT, Edge_map, Vertex_map> tags(edges.first, vertices.first,
+                                                                       Crease_method::uniform);
+    tags.refine(refined, mask, refine_one);
+  } else {
+    throw Bad_input(mask.name() + " does not take sharpness tags: no crease, dart or corner to analyse");
+  }
   stencils = std::move(recorder.rows);
   return refined;
 }
@@ -271,15 +301,72 @@ Patch border_face_patch(const Mask& mask, int k, int rings)
 }
 
 /*
- * The patch of `rings` rings the analysis uses for `mask` at valence n
- * (`border`: a border vertex with n faces): `build_patch`, except at the
- * border for face-centred (dual) schemes, whose border neighbourhoods are
- * made by refinement (`border_face_patch`).
+ * The sharpness tags of a sharp configuration on a patch built around its
+ * centre (`build_patch`, interior): every edge of each sharp ray gets 10 (the
+ * ray of sector boundary i leaves the centre in the direction 2 pi i / n of
+ * the planar layout, and goes on straight through the regular vertices to
+ * the patch border), and a corner's centre gets vertex sharpness 10. The
+ * tags are property maps of the mesh (`patch_edge_sharpness`,
+ * `patch_vertex_sharpness`), so that they follow the patch through copies
+ * and refinement.
+ */
+inline void tag_patch(Patch& patch, const Configuration& where)
+{
+  Analysis_mesh& mesh = patch.mesh;
+  auto edges = mesh.add_property_map<Analysis_mesh::Edge_index, double>(patch_edge_sharpness, 0).first;
+  auto vertices = mesh.add_property_map<Analysis_vertex, double>(patch_vertex_sharpness, 0).first;
+  const Analysis_vertex centre = mesh.source(patch.start);
+  const double infinitely_sharp = 10;
+  if(where.kind == Vertex_kind::corner)
+    vertices[centre] = infinitely_sharp;
+  const auto& origin = mesh.point(centre);
+  for(int ray : where.sharp_rays()) {
+    const double angle = 2 * 3.14159265358979323846 * ray / where.valence;
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    Analysis_vertex v = centre;
+    do { // the edge from v that goes furthest along the ray
+      Analysis_halfedge best;
+      double along = 0;
+      for(Analysis_halfedge h : CGAL::halfedges_around_source(v, mesh)) {
+        const auto& p = mesh.point(mesh.target(h));
+        const double x = p.x() - origin.x(), y = p.y() - origin.y();
+        const double off = std::abs(x * dy - y * dx), a = x * dx + y * dy;
+        if(off < 1e-9 * (1 + std::abs(a)) && a > along) {
+          along = a;
+          best = h;
+        }
+      }
+      require(best != Analysis_halfedge(), "tag_patch: a sharp ray leaves the patch's layout");
+      edges[mesh.edge(best)] = infinitely_sharp;
+      v = mesh.target(best);
+    } while(!mesh.is_border(v));
+  }
+}
+
+/*
+ * The patch of `rings` rings the analysis uses for `mask` at `where`:
+ * `build_patch`, except at the border for face-centred (dual) schemes, whose
+ * border neighbourhoods are made by refinement (`border_face_patch`); the
+ * sharp configurations are interior patches with their tags (`tag_patch`).
  */
 template <class Mask>
-Patch analysis_patch(const Mask& mask, int n, bool border, int rings)
+Patch analysis_patch(const Mask& mask, const Configuration& where, int rings)
 {
   using Traits = Host_of<Mask>;
+  const int n = where.valence;
+  const bool border = where.on_border();
+  if(where.sharp()) {
+    require(Takes_sharpness_tags<Mask>::value,
+            mask.name() + " does not take sharpness tags: no crease, dart or corner to analyse");
+    require(!Traits::face_centred, mask.name() + ": the sharp configurations are vertex-centred");
+    if(where.kind == Vertex_kind::crease)
+      require(where.first_side >= 1 && where.second_side() >= 1,
+              "a crease vertex needs a face or more on each side, got " + std::to_string(where.first_side) + " and " +
+                std::to_string(where.second_side()));
+    Patch patch = build_patch(Traits::regular_face_size, false, n, false, rings);
+    tag_patch(patch, where);
+    return patch;
+  }
   if(Traits::face_centred && border)
     return border_face_patch(mask, n, rings);
   return build_patch(Traits::regular_face_size, Traits::face_centred, n, border, rings);
@@ -310,12 +397,12 @@ namespace internal {
 
 // the matrix of the `rings`-ring neighbourhood; `mask` gives the weights
 template <class Mask>
-Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const Mask& mask, int valence, bool border,
+Local_subdivision_matrix<typename Mask::Number_type> local_matrix_of_rings(const Mask& mask, const Configuration& where,
                                                                            int rings)
 {
   using FT = typename Mask::Number_type;
   using Traits = Host_of<Mask>;
-  const Patch patch = analysis_patch(mask, valence, border, rings + 2);
+  const Patch patch = analysis_patch(mask, where, rings + 2);
   const Labelling old_labels = label_neighbourhood(patch.mesh, patch.start, Traits::face_centred, rings);
   const Analysed_step<Mask> step = analysed_step(patch.mesh, patch.start, mask);
   const Labelling new_labels = label_neighbourhood(step.mesh, step.start, Traits::face_centred, rings);
@@ -389,10 +476,9 @@ Local_subdivision_matrix<FT> local_subdivision_matrix(const Mask& mask, const Co
   const auto analysed = mask.template rebind<Analysis_mesh, FT>();
   const int rings = parameters::choose_parameter(parameters::get_parameter(np, internal::rings_t()), 0);
   if(rings > 0)
-    return internal::local_matrix_of_rings(analysed, where.valence, where.on_border(), rings);
+    return internal::local_matrix_of_rings(analysed, where, rings);
   for(int r = 1; r <= 8; ++r) {
-    Local_subdivision_matrix<FT> result =
-      internal::local_matrix_of_rings(analysed, where.valence, where.on_border(), r);
+    Local_subdivision_matrix<FT> result = internal::local_matrix_of_rings(analysed, where, r);
     if(result.invariant)
       return result;
   }

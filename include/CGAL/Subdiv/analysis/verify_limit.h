@@ -29,7 +29,7 @@ void verify_limit(const DoubleMask& mask, Result& result, const std::vector<doub
 {
   using Traits = Host_of<DoubleMask>;
   const int rings = result.rings + 2;
-  const Patch shape = analysis_patch(mask, result.valence, result.boundary, rings);
+  const Patch shape = analysis_patch(mask, result.configuration, rings);
   Patch patch = shape;
   std::mt19937 random(options.seed + static_cast<unsigned>(result.valence) + (result.boundary ? 1000u : 0u));
   std::uniform_real_distribution<double> coordinate(-1, 1);
