@@ -889,8 +889,9 @@ TEST(SurfaceAnalysisSharp, bad_configurations)
   // two triangles at an interior vertex of valence 2 share all their edges
   EXPECT_THROW(analyse_sharp<S::Loop_mask>(S::Configuration::crease(1, 1)), S::Bad_input);
   EXPECT_THROW(analyse_sharp<S::Catmull_clark_mask>(S::Configuration::crease(0, 3)), S::Bad_input);
-  // schemes without sharpness tags
+  // the sqrt3 schemes take tags, but their sharp configurations are not analysed
   EXPECT_THROW(analyse_sharp<S::Sqrt3_mask>(S::Configuration::dart(5)), S::Bad_input);
+  // a scheme without sharpness tags
   EXPECT_THROW(analyse_sharp<S::Doo_sabin_mask>(S::Configuration::corner(5)), S::Bad_input);
 }
 

@@ -72,7 +72,7 @@ crease sides, dart or corner valence out of range, border vertex of a scheme
 analysed inside only, linear, a parameter out of range); 2 for a malformed
 command line (unknown option or scheme, missing --scheme or --valence,
 --valence for a curve scheme, a malformed --crease, two configurations,
---crease, --dart or --corner for a scheme without sharpness tags). Errors
+--crease, --dart or --corner for a scheme whose sharp vertices are not analysed). Errors
 are one line on stderr: "cgal-subdiv: error: ...".
 )";
 
@@ -496,7 +496,7 @@ int analyse_command(const std::vector<std::string>& arguments)
         throw Usage_error("--crease, --dart and --corner give the configuration: no --valence or --boundary with them");
       for(const char* option : {"--crease", "--dart", "--corner"})
         require_applicable(args, option, facts && facts->sharp_analysis,
-                           "loop, loop-warren and catmull-clark (the schemes that take sharpness tags)");
+                           "loop, loop-warren and catmull-clark (the schemes whose sharp vertices are analysed)");
     }
     if(!sharp && !args.has("--valence") && name != "linear")
       throw Usage_error("missing --valence N (the valence of the vertex to analyse)");

@@ -359,6 +359,11 @@ Patch analysis_patch(const Mask& mask, const Configuration& where, int rings)
     require(Takes_sharpness_tags<Mask>::value,
             mask.name() + " does not take sharpness tags: no crease, dart or corner to analyse");
     require(!Traits::face_centred, mask.name() + ": the sharp configurations are vertex-centred");
+    // the sqrt3 schemes refine a crease as a border, on every second step
+    // only: their sharp configurations would need the two-step patch of
+    // their border analysis, which is not built with tags
+    require(Mask::split != Split::sqrt3,
+            mask.name() + ": the crease, dart and corner configurations of the sqrt3 schemes are not analysed yet");
     if(where.kind == Vertex_kind::crease)
       require(where.first_side >= 1 && where.second_side() >= 1,
               "a crease vertex needs a face or more on each side, got " + std::to_string(where.first_side) + " and " +
