@@ -12,6 +12,15 @@
 # share, and the ratio to Subdivision_method_3. The least of several runs is
 # the figure to compare on a shared machine: the noise only ever adds.
 # --write-doc also writes the table to doc/compile_time.md.
+#
+# A step in the second table is not always code: g++ collects its garbage
+# when its heap has doubled since the last collection, so a few thousand more
+# tokens anywhere in the file can move the first collection and add a second
+# one, about 0.8 G of the 23 G instructions cc1plus runs for refine_only.cpp
+# (c7d9f24's Loop probe plus 5000 empty static_asserts gets it, as the one
+# did at fd32dfe). To compare without noise, count instructions with
+# `valgrind --tool=callgrind` on cc1plus (`g++ -###` shows its command line)
+# and subtract the inclusive count of ggc_collect.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 write_doc=0

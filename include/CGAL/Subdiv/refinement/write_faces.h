@@ -64,14 +64,25 @@ void clear_keeping_properties(CGAL::Surface_mesh<Point>& mesh)
   mesh.clear_without_removing_property_maps();
 }
 
-/// the descriptors of the new vertices, faces and halfedges, by new index
-/// (the halfedges only where the mesh is rebuilt element by element)
+/// the new halfedges by id (2k and 2k + 1 on new edge k), where the mesh is
+/// rebuilt element by element; a Surface_mesh, wired in place, numbers its new
+/// edges itself (`New_level::edge`), so a program that refines one does not
+/// compile the vector
 template <class Mesh>
-struct New_elements
+struct New_halfedges
+{
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> halfedges;
+};
+template <class P>
+struct New_halfedges<CGAL::Surface_mesh<P>>
+{};
+
+/// the descriptors of the new vertices, faces (and halfedges), by new index
+template <class Mesh>
+struct New_elements : New_halfedges<Mesh>
 {
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertices;
   std::vector<typename boost::graph_traits<Mesh>::face_descriptor> faces;
-  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> halfedges;
 };
 
 /*
