@@ -400,7 +400,7 @@ endforeach()
 # OpenSubdiv's subdivided icosahedron with 17 infinitely sharp edges and a
 # corner, two sqrt3 levels (V + F, then V + F again: a crease edge adds two
 # points where its two faces lose theirs): its 51 thirds and the corner are
-# written back; the semi-sharp twin and --limit with tags are refused
+# written back; the semi-sharp twin is refused
 string(REPEAT "t crease 2/1/0 [0-9]+ [0-9]+ 10\n" 51 icos_thirds)
 subdiv_cli_test(surface_sqrt3_infsharp ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_infsharp.obj
   -o @WORK@/out.obj --scheme sqrt3 --levels 2
@@ -408,8 +408,25 @@ subdiv_cli_test(surface_sqrt3_infsharp ARGS surface ${SUBDIV_TEST_DATA_DIR}/open
   FILE_REGEX "\nt creasemethod 0/0/1 normal\n${icos_thirds}t corner 1/1/0 4 10\n$")
 subdiv_surface_error(surface_sqrt3_semisharp 1 "'[^']*loop_icos_semisharp.obj' line 63: tag 'corner': the sharpness 2\\.50* is semi-sharp: --scheme sqrt3 takes 0 or 10 and above only"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/loop_icos_semisharp.obj ${mesh_out} --scheme sqrt3 --levels 1)
-subdiv_surface_error(surface_sqrt3_limit_with_tags 1 "--scheme interpolating-sqrt3 refines with crease and corner tags, but its limit \\(--limit, --displace\\) does not take them yet"
-  ARGS surface ${tetra} ${mesh_out} --scheme interpolating-sqrt3 --levels 1 --sharp-angle 60 --limit)
+# --limit with tags for the sqrt3 schemes: on the octahedron with its
+# equator sharp, an equator vertex goes to the limit of the border rule along
+# the equator, Kobbelt's ternary cubic B-spline (u + 4 v + w) / 6 = (2/3, 0, 0)
+# from (1, 0, 0) between (0, 1, 0) and (0, -1, 0); the interpolating scheme
+# keeps it. --displace with heights of 1 pushes it out by 1 along the mean of
+# its faces' normals, (1, 0, 0)
+set(equator_limit_sqrt3 "\n0\\.6666666666666666[0-9]* 0 0\n")
+set(equator_limit_interpolating-sqrt3 "\n1 0 0\n")
+set(equator_displaced_sqrt3 "\n1\\.666666666666666[0-9]* 0 0\n")
+set(equator_displaced_interpolating-sqrt3 "\n2 0 0\n")
+foreach(scheme IN ITEMS sqrt3 interpolating-sqrt3)
+  string(REPLACE "-" "_" name "${scheme}")
+  subdiv_cli_test(surface_limit_with_creases_${name} ARGS surface ${SUBDIV_CLI_DIR}/octahedron_equator_crease.obj
+    -o @WORK@/out.off --scheme ${scheme} --levels 0 --limit
+    OUTPUT @WORK@/out.off VERTICES 6 FACES 8 FILE @WORK@/out.off FILE_REGEX "${equator_limit_${scheme}}")
+  subdiv_cli_test(surface_displace_with_creases_${name} ARGS surface ${SUBDIV_CLI_DIR}/octahedron_equator_crease.obj
+    -o @WORK@/out.off --scheme ${scheme} --levels 0 --displace ${SUBDIV_CLI_DIR}/octahedron_heights_one.txt
+    OUTPUT @WORK@/out.off VERTICES 6 FACES 8 FILE @WORK@/out.off FILE_REGEX "${equator_displaced_${scheme}}")
+endforeach()
 # OpenSubdiv's icosahedron with infinitely sharp creases and corners, refined
 # by the modified butterfly, writes the children's tags; its semi-sharp twin is
 # refused by the butterflies, naming the line

@@ -8,6 +8,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
+#include <CGAL/Subdiv/limit.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
@@ -19,6 +20,7 @@
 #include "mesh_test_utils.h"
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <functional>
 #include <map>
@@ -561,27 +563,44 @@ FT crease_height(int i, int j)
 }
 
 // the edge of the lattice vertices (i, j) and (k, l) of a grid(n, n, ...)
-Exact_mesh::Edge_index grid_edge(const Exact_mesh& mesh, int n, int i, int j, int k, int l)
+template <class M>
+typename M::Edge_index grid_edge(const M& mesh, int n, int i, int j, int k, int l)
 {
-  return mesh.edge(
-    mesh.halfedge(testing_utils::grid_vertex<Exact_mesh>(n, i, j), testing_utils::grid_vertex<Exact_mesh>(n, k, l)));
+  return mesh.edge(mesh.halfedge(testing_utils::grid_vertex<M>(n, i, j), testing_utils::grid_vertex<M>(n, k, l)));
 }
 
-// a 9 x 9 triangle grid at generic rational heights, with the closed crease
-// around the square [3, 6] x [3, 6] (12 infinitely sharp edges, their ends
-// crease vertices) in the map "e:sharpness"
+// the closed crease around the square [3, 6] x [3, 6] of a grid(9, 9, ...)
+// (12 infinitely sharp edges, their ends crease vertices) in the map
+// "e:sharpness" of values `Sharpness`
+template <class Sharpness, class M>
+void add_square_crease(M& mesh)
+{
+  auto sharpness = mesh.template add_property_map<typename M::Edge_index, Sharpness>("e:sharpness", Sharpness(0)).first;
+  for(int k = 3; k < 6; ++k) {
+    sharpness[grid_edge(mesh, 9, k, 3, k + 1, 3)] = Sharpness(10);
+    sharpness[grid_edge(mesh, 9, k, 6, k + 1, 6)] = Sharpness(10);
+    sharpness[grid_edge(mesh, 9, 3, k, 3, k + 1)] = Sharpness(10);
+    sharpness[grid_edge(mesh, 9, 6, k, 6, k + 1)] = Sharpness(10);
+  }
+}
+
+// a 9 x 9 triangle grid at generic rational heights, with the square crease
+// (`add_square_crease`)
 Exact_mesh creased_grid(const std::function<FT(int, int)>& height)
 {
   Exact_mesh mesh = testing_utils::grid<Exact_mesh>(
     9, 9, [&](int i, int j) { return PE(i, j, height(i, j)); }, true);
-  auto sharpness = mesh.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
-  for(int k = 3; k < 6; ++k) {
-    sharpness[grid_edge(mesh, 9, k, 3, k + 1, 3)] = FT(10);
-    sharpness[grid_edge(mesh, 9, k, 6, k + 1, 6)] = FT(10);
-    sharpness[grid_edge(mesh, 9, 3, k, 3, k + 1)] = FT(10);
-    sharpness[grid_edge(mesh, 9, 6, k, 6, k + 1)] = FT(10);
-  }
+  add_square_crease<FT>(mesh);
   return mesh;
+}
+
+// the map "v:sharpness" of `mesh` (a creased_grid), with a corner (10) at
+// the lattice point (4, 3) on the crease
+Exact_mesh::Property_map<Exact_mesh::Vertex_index, FT> add_crease_corner(Exact_mesh& mesh)
+{
+  auto corners = mesh.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  corners[testing_utils::grid_vertex<Exact_mesh>(9, 4, 3)] = FT(10);
+  return corners;
 }
 
 Exact_mesh::Property_map<Exact_mesh::Edge_index, FT> edge_tags(Exact_mesh& mesh)
@@ -778,9 +797,8 @@ TYPED_TEST(Sqrt3_creases, semi_sharp_is_refused)
 TYPED_TEST(Sqrt3_creases, a_corner_ends_the_crease)
 {
   Exact_mesh mesh = creased_grid(crease_height);
-  auto corners = mesh.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  const auto corners = add_crease_corner(mesh);
   const auto corner = testing_utils::grid_vertex<Exact_mesh>(9, 4, 3);
-  corners[corner] = FT(10);
   const PE c = mesh.point(corner);
   const PE s = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 5, 3));
   const PE s2 = mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 6, 3));
@@ -846,4 +864,154 @@ TYPED_TEST(Sqrt3_creases, a_closed_mesh_with_a_crease_has_a_phase)
   const std::vector<PE> border = border_after_two_levels<TypeParam>(cap);
   ASSERT_EQ(border.size(), 15u);
   EXPECT_EQ(crease_points(mesh), border);
+}
+
+// ---- the limit with creases (sharpness tags) -------------------------------
+
+namespace {
+
+// the 9 x 9 grid of `creased_grid` in doubles, with its square crease
+Mesh creased_grid_in_doubles()
+{
+  Mesh mesh = testing_utils::grid<Mesh>(
+    9, 9, [](int i, int j) { return K::Point_3(i, j, CGAL::to_double(crease_height(i, j))); }, true);
+  add_square_crease<double>(mesh);
+  return mesh;
+}
+
+Mesh::Property_map<Mesh::Edge_index, double> edge_tags(Mesh& mesh)
+{
+  return mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+}
+
+// the lattice points (i, j) of the square crease of a grid(9, 9, ...)
+std::vector<std::pair<int, int>> square_crease_vertices()
+{
+  std::vector<std::pair<int, int>> on_square;
+  for(int i = 3; i <= 6; ++i)
+    for(int j = 3; j <= 6; ++j)
+      if(i == 3 || i == 6 || j == 3 || j == 6)
+        on_square.emplace_back(i, j);
+  return on_square;
+}
+
+} // namespace
+
+// A crease vertex goes to the limit of the border rule along the crease: the
+// border limit of the disk the crease bounds, cut out and projected without
+// tags, exactly. For Kobbelt's rule that is the cubic B-spline's
+// (u + 4 v + w) / 6 over the crease neighbours u, w (not the vertex); the
+// interpolating rule keeps the vertex.
+TYPED_TEST(Sqrt3_creases, a_crease_vertex_goes_to_the_border_limit_of_the_disk)
+{
+  Exact_mesh mesh = creased_grid(crease_height);
+  Exact_mesh disk = testing_utils::grid<Exact_mesh>(
+    3, 3, [&](int i, int j) { return PE(i + 3, j + 3, crease_height(i + 3, j + 3)); }, true);
+  const Exact_mesh control = mesh;
+  S::project_to_limit(mesh, TypeParam(), S::parameters::edge_sharpness_map(edge_tags(mesh)));
+  S::project_to_limit(disk, TypeParam());
+  const std::vector<std::pair<int, int>> on_square = square_crease_vertices();
+  ASSERT_EQ(on_square.size(), 12u);
+  for(const auto& ij : on_square)
+    EXPECT_EQ(mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, ij.first, ij.second)),
+              disk.point(testing_utils::grid_vertex<Exact_mesh>(3, ij.first - 3, ij.second - 3)))
+      << ij.first << " " << ij.second;
+  const auto at = [&](int i, int j) { return control.point(testing_utils::grid_vertex<Exact_mesh>(9, i, j)); };
+  const PE expected =
+    TypeParam().is_interpolating() ? at(4, 3) : CGAL::barycenter(at(3, 3), FT(1), at(4, 3), FT(4), at(5, 3), FT(1));
+  EXPECT_EQ(mesh.point(testing_utils::grid_vertex<Exact_mesh>(9, 4, 3)), expected);
+  if(!TypeParam().is_interpolating()) {
+    EXPECT_NE(expected, at(4, 3));
+  }
+}
+
+// A corner on the crease stays where it is (without the corner Kobbelt's
+// rule moves it), and tags of 0 give the untagged limit, exactly.
+TYPED_TEST(Sqrt3_creases, a_corner_stays_and_zero_tags_give_the_untagged_limit)
+{
+  Exact_mesh mesh = creased_grid(crease_height);
+  const auto corners = add_crease_corner(mesh);
+  const auto corner = testing_utils::grid_vertex<Exact_mesh>(9, 4, 3);
+  const PE c = mesh.point(corner);
+  Exact_mesh no_corner = mesh;
+  S::project_to_limit(mesh, TypeParam(),
+                      S::parameters::edge_sharpness_map(edge_tags(mesh)).vertex_sharpness_map(corners));
+  EXPECT_EQ(mesh.point(corner), c);
+  S::project_to_limit(no_corner, TypeParam(), S::parameters::edge_sharpness_map(edge_tags(no_corner)));
+  EXPECT_EQ(no_corner.point(corner) == c, TypeParam().is_interpolating());
+
+  Exact_mesh zero_tags = testing_utils::grid<Exact_mesh>(
+    9, 9, [&](int i, int j) { return PE(i, j, crease_height(i, j)); }, true);
+  Exact_mesh untagged = zero_tags;
+  const Exact_mesh control = zero_tags;
+  auto zeros = zero_tags.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  auto zero_corners = zero_tags.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  S::project_to_limit(zero_tags, TypeParam(),
+                      S::parameters::edge_sharpness_map(zeros).vertex_sharpness_map(zero_corners));
+  S::project_to_limit(untagged, TypeParam());
+  EXPECT_EQ(points_of(zero_tags), points_of(untagged));
+  EXPECT_EQ(points_of(untagged) == points_of(control), TypeParam().is_interpolating());
+}
+
+// The limit is where refinement with the tags converges: the crease's old
+// vertices approach their crease limit, by at least 4 times every two levels
+// (Kobbelt's ternary rule: 9 times, its second difference shrinks by 9 per
+// ternary step) to a hundredth of their first distance after six levels;
+// the interpolating scheme keeps them at their limit at every level.
+TYPED_TEST(Sqrt3_creases, refinement_converges_to_the_crease_limit)
+{
+  using DMask = decltype(TypeParam().template rebind<Mesh, double>());
+  Mesh mesh = creased_grid_in_doubles(), limit = mesh;
+  S::project_to_limit(limit, DMask(), S::parameters::edge_sharpness_map(edge_tags(limit)));
+  std::vector<double> distance;
+  for(int level = 0; level <= 6; level += 2) {
+    if(level > 0)
+      S::subdivide(mesh, DMask(), S::parameters::number_of_iterations(2).edge_sharpness_map(edge_tags(mesh)));
+    double d = 0;
+    for(const auto& ij : square_crease_vertices()) {
+      const auto v = testing_utils::grid_vertex<Mesh>(9, ij.first, ij.second); // old vertices keep their index
+      d = (std::max)(d, std::sqrt(CGAL::squared_distance(mesh.point(v), limit.point(v))));
+    }
+    distance.push_back(d);
+  }
+  ASSERT_EQ(distance.size(), 4u);
+  if(TypeParam().is_interpolating()) {
+    for(double d : distance)
+      EXPECT_EQ(d, 0.0);
+    return;
+  }
+  EXPECT_GT(distance[0], 0.01);
+  for(std::size_t k = 1; k < distance.size(); ++k)
+    EXPECT_LT(distance[k], distance[k - 1] / 4) << k;
+  EXPECT_LT(distance.back(), distance.front() / 100);
+}
+
+// The limit stencil tables with the tags (a crease and a corner on it) are
+// the refinement with the tags followed by the projection with the refined
+// tags, up to rounding, at 0, 1 and 2 levels (both phases of the crease).
+TYPED_TEST(Sqrt3_creases, limit_tables_with_tags_are_the_projection)
+{
+  using DMask = decltype(TypeParam().template rebind<Mesh, double>());
+  Mesh coarse = creased_grid_in_doubles();
+  auto corners = coarse.add_property_map<Mesh::Vertex_index, double>("v:sharpness", 0.).first;
+  corners[testing_utils::grid_vertex<Mesh>(9, 4, 3)] = 10.;
+  const std::vector<K::Point_3> control(coarse.points().begin(), coarse.points().end());
+  for(int levels = 0; levels <= 2; ++levels) {
+    Mesh refined = coarse;
+    const auto refined_corners = refined.property_map<Mesh::Vertex_index, double>("v:sharpness").first;
+    const auto tags = S::parameters::edge_sharpness_map(edge_tags(refined)).vertex_sharpness_map(refined_corners);
+    S::subdivide(refined, DMask(), tags.number_of_iterations(levels));
+    S::project_to_limit(refined, DMask(), tags);
+    const S::Stencil_table<double> table = S::make_limit_stencil_table(
+      coarse, DMask(),
+      S::parameters::number_of_iterations(levels).edge_sharpness_map(edge_tags(coarse)).vertex_sharpness_map(corners));
+    std::vector<K::Point_3> from_table;
+    table.apply(control, from_table);
+    const std::vector<K::Point_3> projected = points_of(refined);
+    ASSERT_EQ(from_table.size(), projected.size()) << levels;
+    double worst = 0;
+    for(std::size_t k = 0; k < projected.size(); ++k)
+      worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(from_table[k], projected[k])));
+    EXPECT_LT(worst, 1e-12) << levels;
+  }
 }

@@ -45,9 +45,6 @@ struct Surface_scheme
   /// whether it takes semi-sharp values (the butterflies take infinitely
   /// sharp ones only)
   bool semi_sharp = true;
-  /// whether --limit and --displace take the tags too (not for the sqrt3
-  /// schemes: `internal::Limit_takes_sharpness_tags`)
-  bool limit_sharp = true;
 };
 
 /// every scheme this build offers, in the order of --help

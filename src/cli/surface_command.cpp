@@ -261,10 +261,6 @@ int surface_command(const std::vector<std::string>& arguments)
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
-  if(tagged && !scheme.limit_sharp && (displace || args.has("--limit")))
-    throw Input_error("--scheme " + scheme.name +
-                      " refines with crease and corner tags, but its limit (--limit, --displace) does not take "
-                      "them yet");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();

@@ -223,15 +223,26 @@ private:
     if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
       const auto m = mask<PolygonMesh, FT>();
       using M = std::decay_t<decltype(m)>;
-      static_assert(internal::Limit_takes_sharpness_tags<M>::value,
+      static_assert(internal::Takes_sharpness_tags<M>::value,
                     "the limit of this scheme does not take sharpness tags (edge_sharpness_map, "
                     "vertex_sharpness_map) yet");
-      if constexpr(internal::Has_crease_curve<M>::value) {
+      if constexpr(internal::Has_crease_curve<M>::value || M::split == Split::sqrt3) {
         tags.check(mesh, m, who);
         rows = internal::Limit_rows<FT>(num_vertices(mesh));
+        std::vector<FT> crease;
+        if constexpr(M::split == Split::sqrt3) {
+          // the crease rule is the border rule: the border analysis' limit,
+          // at the regular border vertex (3 triangles; the border rule reads
+          // the border alone, so any number of faces gives the same weights)
+          try {
+            crease = internal::crease_limit_weights<FT>(masks(3, true));
+          } catch(const Bad_input& e) {
+            throw Bad_input(who + ": " + e.what());
+          }
+        } else
+          crease = internal::crease_limit_weights(m.crease_curve());
         // the rules of this level do not depend on how sharpness decays
-        return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)),
-                                          m.crease_curve());
+        return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)), crease);
       }
     }
     (void)tags, (void)who;

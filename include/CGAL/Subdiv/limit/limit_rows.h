@@ -209,33 +209,72 @@ struct Crease_curve_scheme
 };
 
 /*
+ * The limit of a crease vertex under a binary curve rule along its two
+ * sharp edges (Loop, Catmull-Clark, the butterflies), over (one crease
+ * neighbour, the vertex, the other): the left fixed vector of the curve's
+ * local matrix (the cubic B-spline's 1/6, 2/3, 1/6); an interpolating rule
+ * (the four-point) keeps the vertex: 0, 1, 0.
+ */
+template <class FT>
+std::vector<FT> crease_limit_weights(const Border_curve_rule<FT>& curve)
+{
+  if(curve.even().size() == 1 && curve.even()[0].first == 0 && curve.even()[0].second == FT(1))
+    return {FT(0), FT(1), FT(0)};
+  const Crease_curve_scheme<FT> scheme{curve};
+  const std::pair<int, int> window = invariant_window(scheme);
+  std::vector<FT> crease = normalised_left_fixed_vector(local_subdivision_matrix(scheme));
+  CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
+  (void)window;
+  return crease;
+}
+
+/*
+ * The limit of a crease vertex of the sqrt3 schemes, whose crease rule is
+ * their border rule (a ternary rule applied on every second step): the
+ * limit mask of the border analysis (`border`, over a resting and a
+ * refining step), which reads the border polyline alone (Kobbelt's ternary
+ * cubic B-spline: 1/6, 2/3, 1/6 over the two border neighbours and the
+ * vertex; the interpolating four-point rule: the vertex), so that a crease
+ * vertex's limit is, by construction, the border limit of the same
+ * polyline. The limit is a fixed vector of the curve rule, so it is the
+ * same on a resting and a refining step (the phase does not matter).
+ * \throws Bad_input if the mask reads more than the vertex and two
+ * neighbours of equal weight (a symmetric curve rule on the border)
+ */
+template <class FT>
+std::vector<FT> crease_limit_weights(const Limit_masks& border)
+{
+  std::vector<FT> crease{FT(0), convert_weight<FT>(border.limit[0]), FT(0)};
+  std::vector<std::size_t> others;
+  for(std::size_t i = 1; i < border.limit.size(); ++i)
+    if(border.limit[i] != 0)
+      others.push_back(i);
+  if(!others.empty()) {
+    if(others.size() != 2 || border.limit[others[0]] != border.limit[others[1]])
+      throw Bad_input("the border limit mask of " + border.scheme +
+                      " is not a symmetric mask over the vertex and its two border neighbours");
+    crease[0] = crease[2] = convert_weight<FT>(border.limit[others[0]]);
+  }
+  return crease;
+}
+
+/*
  * The limit rows under the sharpness tags of the mesh's level (`level`), as
  * OpenSubdiv's `PrimvarRefiner::Limit` takes them, by the rule of each
  * vertex on this level: a corner's limit is the vertex itself; a crease's is
- * the limit of the curve rule along its two sharp edges (the left fixed
- * vector of the curve's local matrix, over the two crease neighbours and the
- * vertex: the cubic B-spline's 1/6, 2/3, 1/6; an interpolating rule keeps the
- * vertex); neither has tangent rows (the
- * normal there is the faces'). Fills those rows of `rows` and returns the
- * other vertices (ordinals), whose rows are the analysis': the children of a
- * smooth vertex's ring follow smooth rules only, whatever the tags around
- * it; a dart gets the smooth masks, as in OpenSubdiv.
+ * the limit of the curve rule along its two sharp edges, `crease` over (the
+ * target of crease_out(0), the vertex, the target of crease_out(1))
+ * (`crease_limit_weights`); neither has tangent rows (the normal there is
+ * the faces'). Fills those rows of `rows` and returns the other vertices
+ * (ordinals), whose rows are the analysis': the children of a smooth
+ * vertex's ring follow smooth rules only, whatever the tags around it; a
+ * dart gets the smooth masks, as in OpenSubdiv.
  */
 template <class FT, class Mesh>
 std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh, const Sharp_level<Mesh, FT>& level,
-                                          const Border_curve_rule<FT>& curve)
+                                          const std::vector<FT>& crease)
 {
-  // an interpolating curve rule (the butterflies' four-point) keeps its
-  // vertices: a crease's limit is the vertex too
-  const bool interpolating = curve.even().size() == 1 && curve.even()[0].first == 0 && curve.even()[0].second == FT(1);
-  std::vector<FT> crease{FT(0), FT(1), FT(0)};
-  if(!interpolating) {
-    const Crease_curve_scheme<FT> scheme{curve};
-    const std::pair<int, int> window = invariant_window(scheme);
-    crease = normalised_left_fixed_vector(local_subdivision_matrix(scheme));
-    CGAL_assertion(window.first == -1 && window.second == 1 && crease.size() == 3); // a primal scheme's crease
-    (void)window;
-  }
+  const bool interpolating = crease[0] == FT(0) && crease[2] == FT(0);
   const Mesh_numbering<Mesh> number(mesh);
   std::vector<std::size_t> smooth;
   for(std::size_t k = 0; k < rows.position.size(); ++k) {

@@ -401,15 +401,6 @@ template <class Mask>
 struct Takes_semi_sharp_tags<Mask, std::enable_if_t<!Mask::takes_semi_sharp_tags>> : std::false_type
 {};
 
-/// whether the limit layer takes sharpness tags for the mask: every mask
-/// that `subdivide()` refines with tags but the sqrt3 ones, whose crease
-/// limit (of a ternary border rule applied on every second step) is not
-/// computed yet
-template <class Mask>
-struct Limit_takes_sharpness_tags
-  : std::integral_constant<bool, Takes_sharpness_tags<Mask>::value && Mask::split != Split::sqrt3>
-{};
-
 /// whether the mask is a tagged copy (`With_sharp_rules`, `With_sharp_level`): its views come
 /// from the tags of its level
 template <class Mask, class = void>
