@@ -4,12 +4,16 @@
 // level equals refining at once; exact values in a rational kernel.
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/mark_sharp_edges.h>
 #include <CGAL/Subdiv/split_non_manifold.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
 #include <CGAL/centroid.h>
 
 #include <gtest/gtest.h>
@@ -627,6 +631,69 @@ TEST(SharpFeatures, one_level_then_another_is_two_levels)
     for(auto e : edges(stepwise))
       ASSERT_EQ(a[e], b[e]) << name << " edge " << e;
   }
+}
+
+// A Polyhedron_3 takes the tags as a Surface_mesh does (the refinement
+// rebuilds it element by element, a path of its own): the same points, and its
+// maps hold the same children's sharpness. Tags in dynamic property maps,
+// copied edge by edge through the vertices' correspondence.
+template <class Polyhedron_mask, class Mesh_mask>
+void expect_polyhedron_as_surface_mesh(const char* name, const Mesh_mask& mesh_mask,
+                                       const Polyhedron_mask& polyhedron_mask)
+{
+  using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+  using Polyhedron_vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
+  SCOPED_TRACE(name);
+  const Tagged_shape shape = read_shape(name);
+  Mesh mesh = tagged_mesh(shape);
+  const Mesh untagged = mesh;
+  Polyhedron poly;
+  std::vector<std::pair<Mesh::Vertex_index, Polyhedron_vertex>> copies;
+  CGAL::copy_face_graph(mesh, poly, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copies)));
+  const std::map<Mesh::Vertex_index, Polyhedron_vertex> copy_of(copies.begin(), copies.end());
+  const Edge_sharpness mesh_edges = mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+  const Vertex_sharpness mesh_vertices = mesh.property_map<Mesh::Vertex_index, double>("v:sharpness").first;
+  auto poly_edges = get(CGAL::dynamic_edge_property_t<double>(), poly);
+  auto poly_vertices = get(CGAL::dynamic_vertex_property_t<double>(), poly);
+  for(auto e : edges(mesh)) {
+    const auto h = halfedge(copy_of.at(mesh.source(mesh.halfedge(e))), copy_of.at(mesh.target(mesh.halfedge(e))), poly);
+    ASSERT_TRUE(h.second);
+    put(poly_edges, edge(h.first, poly), mesh_edges[e]);
+  }
+  for(auto v : vertices(mesh))
+    put(poly_vertices, copy_of.at(v), mesh_vertices[v]);
+
+  const auto np = [&](const auto& edge_map, const auto& vertex_map) {
+    return Sd::parameters::number_of_iterations(2)
+      .edge_sharpness_map(edge_map)
+      .vertex_sharpness_map(vertex_map)
+      .crease_method(shape.method);
+  };
+  Sd::subdivide(mesh, mesh_mask, np(mesh_edges, mesh_vertices));
+  Sd::subdivide(poly, polyhedron_mask, np(poly_edges, poly_vertices));
+  ASSERT_EQ(num_vertices(poly), num_vertices(mesh));
+  EXPECT_LT(testing_utils::position_mismatch(poly, mesh), 1e-14);
+  Mesh smooth = untagged;
+  Sd::subdivide(smooth, mesh_mask, Sd::parameters::number_of_iterations(2));
+  EXPECT_GT(testing_utils::position_mismatch(smooth, mesh), 1e-3); // the tags matter here
+
+  std::vector<double> poly_children, mesh_children;
+  for(auto e : edges(poly))
+    poly_children.push_back(get(poly_edges, e));
+  for(auto e : edges(mesh))
+    mesh_children.push_back(mesh_edges[e]);
+  std::sort(poly_children.begin(), poly_children.end());
+  std::sort(mesh_children.begin(), mesh_children.end());
+  EXPECT_EQ(poly_children, mesh_children);
+  EXPECT_GT(std::count_if(mesh_children.begin(), mesh_children.end(), [](double s) { return s > 0; }), 0);
+}
+
+TEST(SharpFeatures, polyhedron_3_refines_with_tags_as_surface_mesh)
+{
+  using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+  expect_polyhedron_as_surface_mesh("catmark_cubes_semisharp", Sd::Catmull_clark_mask<Mesh>(),
+                                    Sd::Catmull_clark_mask<Polyhedron>());
+  expect_polyhedron_as_surface_mesh("loop_cubes_semisharp", Sd::Loop_mask<Mesh>(), Sd::Loop_mask<Polyhedron>());
 }
 
 // A cube with every edge of sharpness 1/2, in rational arithmetic: a corner
