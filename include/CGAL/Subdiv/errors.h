@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_ERRORS_H
 #define CGAL_SUBDIV_ERRORS_H
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -28,6 +29,61 @@ public:
 
 namespace internal {
 
+/*
+ * An error message appended piece by piece into one string,
+ * `Message() << scheme << ": face " << index << " has " << size << " vertices"`:
+ * no temporary strings, so each refusal adds little code to a user's program.
+ * A chain of operator+ and std::to_string makes g++ emit a cleanup for every
+ * temporary; in a plain refinement program those made the checks the largest
+ * functions compiled (compile time is part of the API, doc/compile_time.md).
+ */
+class Message
+{
+public:
+  Message& operator<<(const std::string& piece)
+  {
+    m_text += piece;
+    return *this;
+  }
+  Message& operator<<(const char* piece)
+  {
+    m_text += piece;
+    return *this;
+  }
+  Message& operator<<(int number) { return signed_number(number); }
+  Message& operator<<(long number) { return signed_number(number); }
+  Message& operator<<(long long number) { return signed_number(number); }
+  Message& operator<<(unsigned number) { return unsigned_number(number); }
+  Message& operator<<(unsigned long number) { return unsigned_number(number); }
+  Message& operator<<(unsigned long long number) { return unsigned_number(number); }
+
+  const std::string& str() const { return m_text; }
+
+private:
+  Message& signed_number(long long number)
+  {
+    char digits[24];
+    std::snprintf(digits, sizeof digits, "%lld", number);
+    m_text += digits;
+    return *this;
+  }
+  Message& unsigned_number(unsigned long long number)
+  {
+    char digits[24];
+    std::snprintf(digits, sizeof digits, "%llu", number);
+    m_text += digits;
+    return *this;
+  }
+
+  std::string m_text;
+};
+
+/// throws `Bad_input` with the message
+[[noreturn]] inline void refuse(const Message& message)
+{
+  throw Bad_input(message.str());
+}
+
 inline void require(bool condition, const std::string& message)
 {
   if(!condition)
@@ -37,13 +93,14 @@ inline void require(bool condition, const std::string& message)
 // Refuse before allocating: the output of `levels` levels on n points has at most n 2^levels points.
 inline void check_output_size(std::size_t n, int levels, std::size_t limit)
 {
-  require(levels >= 0, "the number of levels must not be negative, got " + std::to_string(levels));
+  if(levels < 0)
+    refuse(Message() << "the number of levels must not be negative, got " << levels);
   double estimate = static_cast<double>(n);
   for(int l = 0; l < levels && estimate <= static_cast<double>(limit); ++l)
     estimate *= 2;
-  require(estimate <= static_cast<double>(limit), std::to_string(levels) + " levels on " + std::to_string(n) +
-                                                    " points would make more than " + std::to_string(limit) +
-                                                    " points (the max_output_points limit)");
+  if(estimate > static_cast<double>(limit))
+    refuse(Message() << levels << " levels on " << n << " points would make more than " << limit
+                     << " points (the max_output_points limit)");
 }
 
 } // namespace internal

@@ -42,9 +42,9 @@ public:
   /// \throws Bad_input unless 1 <= degree <= max_degree
   explicit Uniform_bspline_scheme(int degree = 3) : m_degree(degree)
   {
-    internal::require(
-      degree >= 1 && degree <= max_degree,
-      "B-spline degree must be between 1 and " + std::to_string(max_degree) + ", got " + std::to_string(degree));
+    if(degree < 1 || degree > max_degree)
+      internal::refuse(internal::Message()
+                       << "B-spline degree must be between 1 and " << int(max_degree) << ", got " << degree);
     derive_masks();
   }
 

@@ -152,7 +152,27 @@ bool passes_mesh_checks(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap&
 [[noreturn]] inline void refuse_element(const std::string& scheme, const char* element, std::size_t index,
                                         const std::string& what)
 {
-  throw Bad_input(scheme + ": " + element + " " + std::to_string(index) + " " + what);
+  refuse(Message() << scheme << ": " << element << " " << index << " " << what);
+}
+
+// the refusals of the whole mesh, out of the templates
+[[noreturn]] inline void refuse_mesh(const std::string& scheme, const char* what)
+{
+  refuse(Message() << scheme << ": " << what);
+}
+
+// check_mesh's requirements of every mesh, before the elements are checked
+inline void require_faces_and_no_garbage(const std::string& scheme, bool has_faces, bool garbage)
+{
+  if(!has_faces)
+    refuse_mesh(scheme, "the mesh is empty (it has no faces)");
+  if(garbage)
+    refuse_mesh(scheme, "the mesh still holds removed elements (garbage); call collect_garbage() on it first");
+}
+
+[[noreturn]] inline void refuse_invalid_mesh(const std::string& scheme)
+{
+  refuse_mesh(scheme, "the mesh is not a valid polygon mesh");
 }
 
 /*
@@ -174,10 +194,10 @@ enum class Isolated_check { refuse, refuse_naming_parameter, allow };
 inline void check_face_size(const std::string& scheme, std::size_t index, std::size_t size, int required_face_size)
 {
   if(size < 3)
-    refuse_element(scheme, "face", index, "has only " + std::to_string(size) + " vertices");
+    refuse(Message() << scheme << ": face " << index << " has only " << size << " vertices");
   if(required_face_size != 0 && size != static_cast<std::size_t>(required_face_size))
-    throw Bad_input(scheme + " needs a mesh whose faces all have " + std::to_string(required_face_size) +
-                    " vertices; face " + std::to_string(index) + " has " + std::to_string(size));
+    refuse(Message() << scheme << " needs a mesh whose faces all have " << required_face_size << " vertices; face "
+                     << index << " has " << size);
 }
 
 // CGAL's validity, which refuses a vertex in no face: on a copy without them
@@ -205,9 +225,7 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
   const bool isolated_pass = isolated == Isolated_check::allow;
   if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
-  require(!faces(mesh).empty(), scheme + ": the mesh is empty (it has no faces)");
-  require(!has_garbage(mesh),
-          scheme + ": the mesh still holds removed elements (garbage); call collect_garbage() on it first");
+  require_faces_and_no_garbage(scheme, !faces(mesh).empty(), has_garbage(mesh));
   // A vertex is manifold when the halfedges around it (one fan) are all of its
   // incoming halfedges and at most one of them is a border halfedge (a
   // halfedge structure can chain two fans through their border halfedges).
@@ -242,8 +260,8 @@ void check_mesh(const Mesh& mesh, const VertexPointMap& vpm, const std::string& 
     check_face_size(scheme, i, CGAL::halfedges_around_face(halfedge(f, mesh), mesh).size(), required_face_size);
     ++i;
   }
-  require(isolated_pass ? valid_without_isolated_vertices(mesh) : CGAL::is_valid_polygon_mesh(mesh),
-          scheme + ": the mesh is not a valid polygon mesh");
+  if(!(isolated_pass ? valid_without_isolated_vertices(mesh) : CGAL::is_valid_polygon_mesh(mesh)))
+    refuse_invalid_mesh(scheme);
 }
 
 /*
@@ -264,17 +282,15 @@ void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, co
   const bool isolated_pass = isolated == Isolated_check::allow;
   if(passes_mesh_checks(mesh, vpm, required_face_size, isolated_pass))
     return;
-  require(mesh.number_of_faces() != 0, scheme + ": the mesh is empty (it has no faces)");
-  require(!mesh.has_garbage(),
-          scheme + ": the mesh still holds removed elements (garbage); call collect_garbage() on it first");
-  const std::string invalid = scheme + ": the mesh is not a valid polygon mesh";
+  require_faces_and_no_garbage(scheme, mesh.number_of_faces() != 0, mesh.has_garbage());
   const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
   const auto in_range = [nh](H h) { return std::size_t(h) < nh; };
   std::vector<std::size_t> incoming(nv, 0), incoming_border(nv, 0);
   for(std::size_t i = 0; i < nh; ++i) {
     const H h(static_cast<size_type>(i));
     const std::size_t t = std::size_t(mesh.target(h));
-    require(t < nv && in_range(mesh.next(h)) && in_range(mesh.opposite(h)), invalid);
+    if(!(t < nv && in_range(mesh.next(h)) && in_range(mesh.opposite(h))))
+      refuse_invalid_mesh(scheme);
     ++incoming[t];
     if(mesh.face(h) == SM::null_face())
       ++incoming_border[t];
@@ -289,25 +305,29 @@ void check_mesh(const CGAL::Surface_mesh<P>& mesh, const VertexPointMap& vpm, co
         refuse_isolated(scheme, i, isolated);
       continue;
     }
-    require(in_range(h) && mesh.target(h) == v, invalid);
+    if(!(in_range(h) && mesh.target(h) == v))
+      refuse_invalid_mesh(scheme);
     std::size_t fan = 0; // the halfedges around the target, as CGAL's circulator walks them
     H g = h;
     do {
       ++fan;
       g = mesh.opposite(mesh.next(g));
     } while(g != h && fan <= nh);
-    require(g == h, invalid);
+    if(g != h)
+      refuse_invalid_mesh(scheme);
     if(fan != incoming[i] || incoming_border[i] > 1)
       refuse_element(scheme, "vertex", i, "is non-manifold (its faces do not form one fan)");
   }
   for(std::size_t i = 0; i < nf; ++i) {
     const H h = mesh.halfedge(typename SM::Face_index(static_cast<size_type>(i)));
-    require(in_range(h), invalid);
+    if(!in_range(h))
+      refuse_invalid_mesh(scheme);
     const std::size_t size = face_cycle_length(mesh, h);
-    require(size != 0, invalid);
+    if(size == 0)
+      refuse_invalid_mesh(scheme);
     check_face_size(scheme, i, size, required_face_size);
   }
-  throw Bad_input(invalid);
+  refuse_invalid_mesh(scheme);
 }
 
 /// "17.0 GB", "512 MB", "3 kB": a size for a message
@@ -335,25 +355,31 @@ inline void check_output_faces(const std::string& scheme, double faces_in, doubl
                                double bytes_per_face, int levels, double max_bytes = 0,
                                const std::string& raise_hint = "the named parameter max_memory raises it")
 {
-  require(levels >= 0, scheme + ": the number of levels must not be negative, got " + std::to_string(levels));
-  require(max_bytes >= 0, scheme + ": the memory limit must be positive");
+  if(levels < 0)
+    refuse(Message() << scheme << ": the number of levels must not be negative, got " << levels);
+  if(max_bytes < 0)
+    refuse(Message() << scheme << ": the memory limit must be positive");
   const double limit = max_bytes > 0 ? max_bytes : physical_memory_bytes();
   // in logarithms: a billion levels must not take a billion steps
   const double log10_faces = std::log10((std::max)(faces_in, 1.0)) + levels * std::log10(growth_per_level);
   const double log10_bytes = log10_faces + std::log10(bytes_per_face);
   if(log10_bytes <= std::log10(limit))
     return;
-  const std::string faces_out = log10_faces < 15
-                                  ? std::to_string(std::llround(std::pow(10.0, log10_faces)))
-                                  : "about 10^" + std::to_string(static_cast<long long>(std::floor(log10_faces)));
-  const std::string bytes_out =
-    log10_bytes < 18 ? "about " + memory_text(std::pow(10.0, log10_bytes))
-                     : "about 10^" + std::to_string(static_cast<long long>(std::floor(log10_bytes))) + " bytes";
-  throw Bad_input(scheme + ": " + std::to_string(levels) + (levels == 1 ? " level" : " levels") + " on " +
-                  std::to_string(std::llround(faces_in)) + " faces would make " + faces_out + " faces, " + bytes_out +
-                  " at " + std::to_string(std::llround(bytes_per_face)) +
-                  " bytes per face, more than the memory limit of " + memory_text(limit) +
-                  (max_bytes > 0 ? "" : " (this machine's memory)") + "; " + raise_hint);
+  Message message;
+  message << scheme << ": " << levels << (levels == 1 ? " level" : " levels") << " on " << std::llround(faces_in)
+          << " faces would make ";
+  if(log10_faces < 15)
+    message << std::llround(std::pow(10.0, log10_faces));
+  else
+    message << "about 10^" << static_cast<long long>(std::floor(log10_faces));
+  message << " faces, about ";
+  if(log10_bytes < 18)
+    message << memory_text(std::pow(10.0, log10_bytes));
+  else
+    message << "10^" << static_cast<long long>(std::floor(log10_bytes)) << " bytes";
+  message << " at " << std::llround(bytes_per_face) << " bytes per face, more than the memory limit of "
+          << memory_text(limit) << (max_bytes > 0 ? "" : " (this machine's memory)") << "; " << raise_hint;
+  refuse(message);
 }
 
 } // namespace internal
