@@ -5,6 +5,7 @@
 #ifndef CGAL_SUBDIV_TEST_OPENSUBDIV_BASELINES_H
 #define CGAL_SUBDIV_TEST_OPENSUBDIV_BASELINES_H
 
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 

@@ -3,6 +3,12 @@
 # Subdivision_method_3 (issue: "compile time is part of the API").
 #
 #   bash src/scripts/compile_time.sh [--write-doc] [runs]     (default 5 runs)
+#   bash src/scripts/compile_time.sh --instructions
+#
+# --instructions counts, instead of timing, the instructions the compiler runs
+# for refine_only.cpp (valgrind's callgrind on g++ and its children, cc1plus
+# above all): the same count on every run, whatever else the machine does, so
+# a difference of 1 % is real. It takes about 2 minutes per probe.
 #
 # Compiles src/bench/compile_time/probe.cpp (read, refine, write) and
 # refine_only.cpp (the refinement alone) as every probe below `runs` times,
@@ -24,6 +30,39 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 write_doc=0
+if [[ ${1:-} == --instructions ]]; then
+  command -v valgrind >/dev/null || { echo "compile_time.sh: --instructions needs valgrind" >&2; exit 2; }
+  cxx=${CXX:-g++}
+  out=$(mktemp -d)
+  trap 'rm -rf "$out"' EXIT
+  declare -A count
+  for p in read_write sm3_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_narrow_loop; do
+    case $p in
+      read_write) f="" ;;
+      sm3_catmull_clark) f="-DPROBE_SM3" ;;
+      subdiv_narrow_catmull_clark) f="-DPROBE_SUBDIV_NARROW" ;;
+      sm3_loop) f="-DPROBE_SM3 -DPROBE_LOOP" ;;
+      subdiv_narrow_loop) f="-DPROBE_SUBDIV_NARROW -DPROBE_LOOP" ;;
+    esac
+    rm -f "$out"/cg.*
+    # shellcheck disable=SC2086
+    valgrind --tool=callgrind --trace-children=yes --callgrind-out-file="$out/cg.%p" "$cxx" -std=c++17 -O2 \
+      -I "$root/include" $f -c "$root/src/bench/compile_time/refine_only.cpp" -o "$out/$p.o" 2>/dev/null
+    count[$p]=$(awk '/^summary:/ {s += $2} END {printf "%.0f", s}' "$out"/cg.*)
+  done
+  echo "| program (refine_only.cpp) | instructions (G) | above Surface_mesh | vs Subdivision_method_3 |"
+  echo "|---|---|---|---|"
+  for p in read_write sm3_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_narrow_loop; do
+    ref=-
+    case $p in
+      *catmull_clark) ref=${count[sm3_catmull_clark]} ;;
+      *loop) ref=${count[sm3_loop]} ;;
+    esac
+    awk -v p="$p" -v c="${count[$p]}" -v b="${count[read_write]}" -v r="$ref" 'BEGIN {
+      printf "| %s | %.2f | %+.2f | %s |\n", p, c / 1e9, (c - b) / 1e9, r == "-" ? "-" : sprintf("%.3f", c / r) }'
+  done
+  exit 0
+fi
 if [[ ${1:-} == --write-doc ]]; then
   write_doc=1
   shift
@@ -31,7 +70,7 @@ fi
 runs=${1:-5}
 [[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "compile_time.sh: runs must be a positive integer, got '$runs'" >&2; exit 2; }
 cxx=${CXX:-g++}
-probes=(read_write sm3_catmull_clark subdiv_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_loop)
+probes=(read_write sm3_catmull_clark subdiv_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_loop subdiv_narrow_loop)
 # the preprocessor flags of each probe (probe.cpp says what they select)
 declare -A flags=(
   [read_write]=""
@@ -40,6 +79,7 @@ declare -A flags=(
   [subdiv_narrow_catmull_clark]="-DPROBE_SUBDIV_NARROW"
   [sm3_loop]="-DPROBE_SM3 -DPROBE_LOOP"
   [subdiv_loop]="-DPROBE_SUBDIV -DPROBE_LOOP"
+  [subdiv_narrow_loop]="-DPROBE_SUBDIV_NARROW -DPROBE_LOOP"
 )
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 out=$(mktemp -d)
@@ -102,8 +142,9 @@ if ((write_doc)); then
     echo "(\`src/bench/compile_time/\`, one per library and scheme) is compiled"
     echo "with \`g++ -std=c++17 -O2\` as a user would; the time is CPU (user + sys), the least"
     echo "of $runs compiles, the compiles of every program taking turns."
-    echo "\`subdiv_*\` include \`<CGAL/Subdiv.h>\`, \`subdiv_narrow_*\` only"
-    echo "\`<CGAL/Subdiv/surface_subdivision.h>\`, \`sm3_*\` CGAL's \`<CGAL/subdivision_method_3.h>\`."
+    echo "\`subdiv_*\` include \`<CGAL/Subdiv.h>\`, \`subdiv_narrow_*\` only the scheme's header"
+    echo "(\`<CGAL/Subdiv/loop_subdivision.h>\`, \`<CGAL/Subdiv/catmull_clark_subdivision.h>\`),"
+    echo "\`sm3_*\` CGAL's \`<CGAL/subdivision_method_3.h>\`."
     echo "Load average before the run: $load_before. On a shared machine the noise between"
     echo "compiles (up to 30 %) can exceed the differences in the first table: the second, where"
     echo "the shared part is a quarter as large, resolves them better. Trust a difference only"

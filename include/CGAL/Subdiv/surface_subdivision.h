@@ -5,57 +5,25 @@
 
 /// \file surface_subdivision.h
 /// One-line wrappers of `subdivide()`, one per scheme, with the names users
-/// of CGAL expect.
+/// of CGAL expect, and every mask and host. A program that uses one scheme
+/// compiles faster with that scheme's header alone: `loop_subdivision.h`,
+/// `catmull_clark_subdivision.h` (doc/compile_time.md).
 
+#include <CGAL/Subdiv/catmull_clark_subdivision.h>
+#include <CGAL/Subdiv/hosts/hosts.h>
+#include <CGAL/Subdiv/internal/call_parameters.h>
+#include <CGAL/Subdiv/loop_subdivision.h>
 #include <CGAL/Subdiv/masks/Butterfly_mask.h>
-#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Doo_sabin_mask.h>
 #include <CGAL/Subdiv/masks/Interpolating_sqrt3_mask.h>
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
-#include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/masks/Modified_butterfly_mask.h>
 #include <CGAL/Subdiv/masks/Sqrt3_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
-#include <CGAL/boost/graph/named_params_helper.h>
 
 namespace CGAL {
 namespace Subdiv {
-namespace internal {
-
-/// the number type of the masks of a call: that of the kernel of its
-/// `geom_traits`, by default the kernel of the points of its `vertex_point_map`
-template <class PolygonMesh, class NamedParameters>
-using Call_FT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type::FT;
-
-/// the `Border_corners` of the masks of a call (its `boundary_interpolation`)
-template <class NamedParameters>
-Border_corners call_border_corners(const NamedParameters& np)
-{
-  return border_corners_for(parameters::choose_parameter(parameters::get_parameter(np, boundary_interpolation_t()),
-                                                         Boundary_interpolation::edges_only));
-}
-
-} // namespace internal
-
-/// Loop subdivision with Loop's 1987 weights. \sa `subdivide()`, `Loop_mask`
-template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
-void loop_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
-{
-  subdivide(mesh,
-            Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(internal::call_border_corners(np)),
-            np);
-}
-
-/// Loop subdivision with Warren's rational weights. \sa `subdivide()`, `Loop_mask`, `Warren_beta`
-template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
-void loop_warren_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
-{
-  subdivide(mesh,
-            Loop_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>, Warren_beta>(
-              internal::call_border_corners(np)),
-            np);
-}
 
 /// Butterfly subdivision (Dyn, Levin, Gregory 1990, tension 1/16). \sa `subdivide()`, `Butterfly_mask`
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
@@ -76,18 +44,6 @@ template <class PolygonMesh, class NamedParameters = parameters::Default_named_p
 void linear_triangle_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
   subdivide(mesh, Linear_triangle_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(), np);
-}
-
-/// Catmull-Clark subdivision of any polygon mesh. \sa `subdivide()`, `Catmull_clark_mask`
-template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
-void catmull_clark_subdivision(PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
-{
-  const Triangle_subdivision triangles = parameters::choose_parameter(
-    parameters::get_parameter(np, internal::triangle_subdivision_t()), Triangle_subdivision::catmark);
-  subdivide(mesh,
-            Catmull_clark_mask<PolygonMesh, internal::Call_FT<PolygonMesh, NamedParameters>>(
-              internal::call_border_corners(np), triangles),
-            np);
 }
 
 /// Doo-Sabin subdivision of any polygon mesh. \sa `subdivide()`, `Doo_sabin_mask`

@@ -1,7 +1,8 @@
 // The refinement call of the compile-time probes (probe.cpp, refine_only.cpp):
 // a Surface_mesh refined 3 levels, the library and the scheme chosen by
 //   -DPROBE_SUBDIV         ours, with <CGAL/Subdiv.h>
-//   -DPROBE_SUBDIV_NARROW  ours, with <CGAL/Subdiv/surface_subdivision.h> only
+//   -DPROBE_SUBDIV_NARROW  ours, with the scheme's header only
+//                         (<CGAL/Subdiv/loop_subdivision.h>, <CGAL/Subdiv/catmull_clark_subdivision.h>)
 //   -DPROBE_SM3            CGAL's Subdivision_method_3
 //   none of them          no refinement (the mesh is cleared)
 // and -DPROBE_LOOP for Loop (otherwise Catmull-Clark).
@@ -12,8 +13,10 @@
 #include <CGAL/Surface_mesh.h>
 #if defined(PROBE_SUBDIV)
 #include <CGAL/Subdiv.h>
+#elif defined(PROBE_SUBDIV_NARROW) && defined(PROBE_LOOP)
+#include <CGAL/Subdiv/loop_subdivision.h>
 #elif defined(PROBE_SUBDIV_NARROW)
-#include <CGAL/Subdiv/surface_subdivision.h>
+#include <CGAL/Subdiv/catmull_clark_subdivision.h>
 #elif defined(PROBE_SM3)
 #include <CGAL/subdivision_method_3.h>
 #endif

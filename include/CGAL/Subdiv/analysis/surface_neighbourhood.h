@@ -12,7 +12,7 @@
 #include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
 #include <CGAL/Subdiv/analysis/analysis_patch.h>
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Row_builder.h>

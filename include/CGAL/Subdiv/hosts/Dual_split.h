@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
 #define CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
 
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
@@ -227,6 +228,13 @@ private:
   std::size_t m_edge_count;        // new edges but the closing ones
   std::size_t m_vertex_face_count; // vertices with 3 or more faces
   std::size_t m_closing_count;     // border vertices with 3 or more faces
+};
+
+/// `Split::dual` is refined by `Dual_split`
+template <class Mesh>
+struct Host_for<Split::dual, Mesh>
+{
+  using type = Dual_split<Mesh>;
 };
 
 } // namespace Subdiv

@@ -4,13 +4,13 @@
 #define CGAL_SUBDIV_HOSTS_HOST_FOR_H
 
 /// \file Host_for.h
-/// The refinement host of each split: the one place that maps a mask's
-/// `split` trait to the topology code. Adding a host means adding it here.
+/// How a mask's `split` trait selects the topology code: each host header
+/// (`Triangle_quadrisection.h`, `Quad_split.h`, `Dual_split.h`,
+/// `Sqrt3_split.h`) specialises `Host_for` for its split, and `hosts.h`
+/// includes them all. A program that refines with one scheme includes only
+/// that scheme's host (through `loop_subdivision.h`, say): compile time is
+/// part of the API (doc/compile_time.md).
 
-#include <CGAL/Subdiv/hosts/Dual_split.h>
-#include <CGAL/Subdiv/hosts/Quad_split.h>
-#include <CGAL/Subdiv/hosts/Sqrt3_split.h>
-#include <CGAL/Subdiv/hosts/Triangle_quadrisection.h>
 #include <CGAL/Subdiv/views/Split.h>
 
 #include <type_traits>
@@ -20,33 +20,16 @@ namespace Subdiv {
 
 /*!
  * \ingroup PkgSubdivHosts
- * `Host_for<split, Mesh>::type`: the refinement host of `split` over `Mesh`.
+ * `Host_for<split, Mesh>::type`: the refinement host of `split` over `Mesh`,
+ * defined by the host's header.
  */
 template <Split split, class Mesh>
-struct Host_for;
-
-template <class Mesh>
-struct Host_for<Split::triangle_quadrisection, Mesh>
+struct Host_for
 {
-  using type = Triangle_quadrisection<Mesh>;
-};
-
-template <class Mesh>
-struct Host_for<Split::quad, Mesh>
-{
-  using type = Quad_split<Mesh>;
-};
-
-template <class Mesh>
-struct Host_for<Split::dual, Mesh>
-{
-  using type = Dual_split<Mesh>;
-};
-
-template <class Mesh>
-struct Host_for<Split::sqrt3, Mesh>
-{
-  using type = Sqrt3_split<Mesh>;
+  static_assert(split != split,
+                "the host of this mask's split is not included: include "
+                "<CGAL/Subdiv/hosts/hosts.h> (every host), the scheme's header "
+                "(<CGAL/Subdiv/loop_subdivision.h>, ...) or <CGAL/Subdiv/surface_subdivision.h>");
 };
 
 /// the host that refines with `Mask` (its `split` over its `Polygon_mesh`)

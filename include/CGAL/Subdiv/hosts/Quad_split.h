@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_HOSTS_QUAD_SPLIT_H
 #define CGAL_SUBDIV_HOSTS_QUAD_SPLIT_H
 
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
@@ -201,6 +202,13 @@ private:
   std::size_t m_edge_count;
   std::size_t m_face_count;
   std::size_t m_corner_count;
+};
+
+/// `Split::quad` is refined by `Quad_split`
+template <class Mesh>
+struct Host_for<Split::quad, Mesh>
+{
+  using type = Quad_split<Mesh>;
 };
 
 } // namespace Subdiv

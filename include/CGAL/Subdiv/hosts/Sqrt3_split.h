@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_HOSTS_SQRT3_SPLIT_H
 #define CGAL_SUBDIV_HOSTS_SQRT3_SPLIT_H
 
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
@@ -495,6 +496,13 @@ private:
   std::vector<Index> m_edge_of_pair;  // refining step: the cut edge of each pair p1, p2
   std::vector<halfedge_descriptor>
     m_halfedge_of_pair; // refining step: that edge, as the halfedge of its first face, from p1 to p2
+};
+
+/// `Split::sqrt3` is refined by `Sqrt3_split`
+template <class Mesh>
+struct Host_for<Split::sqrt3, Mesh>
+{
+  using type = Sqrt3_split<Mesh>;
 };
 
 } // namespace Subdiv

@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_HOSTS_TRIANGLE_QUADRISECTION_H
 #define CGAL_SUBDIV_HOSTS_TRIANGLE_QUADRISECTION_H
 
+#include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/parallel.h>
@@ -146,6 +147,13 @@ private:
   std::size_t m_vertex_count;
   std::size_t m_edge_count;
   std::size_t m_face_count;
+};
+
+/// `Split::triangle_quadrisection` is refined by `Triangle_quadrisection`
+template <class Mesh>
+struct Host_for<Split::triangle_quadrisection, Mesh>
+{
+  using type = Triangle_quadrisection<Mesh>;
 };
 
 } // namespace Subdiv

@@ -12,6 +12,7 @@
 #include <CGAL/Subdiv/analysis/Configuration.h>
 #include <CGAL/Subdiv/analysis/Limit_masks.h>
 #include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/points.h>

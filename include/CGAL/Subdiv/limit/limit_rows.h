@@ -23,7 +23,7 @@
 #include <CGAL/Subdiv/analysis/Neighbourhood_walk.h>
 #include <CGAL/Subdiv/analysis/curve_local_matrix.h>
 #include <CGAL/Subdiv/errors.h>
-#include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>

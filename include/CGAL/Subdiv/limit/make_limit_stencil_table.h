@@ -3,7 +3,7 @@
 #ifndef CGAL_SUBDIV_LIMIT_MAKE_LIMIT_STENCIL_TABLE_H
 #define CGAL_SUBDIV_LIMIT_MAKE_LIMIT_STENCIL_TABLE_H
 
-#include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/stencils/Stencil_table.h>

@@ -3,6 +3,7 @@
 #ifndef CGAL_SUBDIV_MAKE_STENCIL_TABLE_H
 #define CGAL_SUBDIV_MAKE_STENCIL_TABLE_H
 
+#include <CGAL/Subdiv/hosts/hosts.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/parallel.h>

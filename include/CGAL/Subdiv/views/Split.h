@@ -11,7 +11,7 @@ namespace Subdiv {
  * The topological split of a surface scheme: a trait of its mask
  * (`static constexpr Split split`), like OpenSubdiv's
  * `Sdc::SchemeTypeTraits::GetTopologicalSplitType()`. The refinement host
- * that performs a split is `Host_for<split, Mesh>` (`hosts/Host_for.h`): the
+ * that performs a split is `Host_for<split, Mesh>`, defined by the host's header: the
  * masks know nothing of hosts.
  */
 enum class Split {
