@@ -31,6 +31,15 @@ using Exact_mesh = CGAL::Surface_mesh<PE>;
 using Edge_tags = Exact_mesh::Property_map<Exact_mesh::Edge_index, FT>;
 using Vertex_tags = Exact_mesh::Property_map<Exact_mesh::Vertex_index, FT>;
 
+// subdivide() takes the tags for Doo-Sabin, the limit layer does not (the
+// limit of a Doo-Sabin crease is not derived): project_to_limit(),
+// limit_normals(), displace() and the limit stencil tables do not compile
+// with them, while Loop's do
+static_assert(S::internal::Takes_sharpness_tags<S::Doo_sabin_mask<Exact_mesh>>::value, "Doo-Sabin takes tags");
+static_assert(!S::internal::Takes_semi_sharp_tags<S::Doo_sabin_mask<Exact_mesh>>::value, "infinitely sharp only");
+static_assert(!S::internal::Limit_takes_sharpness_tags<S::Doo_sabin_mask<Exact_mesh>>::value, "no limit with tags");
+static_assert(S::internal::Limit_takes_sharpness_tags<S::Loop_mask<Exact_mesh>>::value, "Loop's limit takes tags");
+
 namespace {
 
 FT height(int i, int j)
