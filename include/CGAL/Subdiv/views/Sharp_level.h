@@ -232,8 +232,10 @@ struct Has_vertex_parents<Host, std::void_t<decltype(std::declval<const Host&>()
 /*
  * A sink of `refine_level` (refinement/refine_level.h): after the level, puts
  * the sharpness of every new edge in `edges` and of every new vertex in
- * `vertices` (each unless its type is CGAL's `Param_not_found`), from the tags of the old level (edge splits
- * only). The value written is the effective one: a border edge gets the
+ * `vertices` (each unless its type is CGAL's `Param_not_found`), from the tags of the old level: by
+ * the edge splits' numbering, or through the old edge and the old vertex that
+ * the host names (`edge_parents()`, `vertex_parents()`: the sqrt3 and the
+ * dual splits). The value written is the effective one: a border edge gets the
  * infinite sharpness 10, so that refining one level and then another gives
  * what two levels give, bit for bit.
  */
