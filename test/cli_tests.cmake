@@ -363,8 +363,24 @@ subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}
   OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
   FILE @WORK@/out.obj
   FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
-subdiv_surface_error(surface_tags_other_scheme 1 "--scheme doo-sabin does not take OpenSubdiv's crease, corner and boundary tags yet"
+# doo-sabin with creases: the octahedron's equator (4 infinitely sharp edges)
+# is refined by Chaikin's rule, the corners of its faces at an equator vertex
+# welded across it: 24 - 8 vertices, 8 + 12 - 4 + 2 faces; Chaikin's point
+# 3/4 (1, 0, 0) + 1/4 (0, 1, 0) is a vertex, and the 8 new crease edges are
+# written back as tags
+string(REPEAT "t crease 2/1/0 [0-9]+ [0-9]+ 10\n" 8 eight_creases)
+subdiv_cli_test(surface_doo_sabin_creases ARGS surface ${SUBDIV_CLI_DIR}/octahedron_equator_crease.obj
+  -o @WORK@/out.obj --scheme doo-sabin --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 16 FACES 18 FILE @WORK@/out.obj
+  FILE_REGEX "\nv 0\\.75 0\\.25 0\n.*\nt creasemethod 0/0/1 normal\n${eight_creases}$")
+# semi-sharp tags are refused, naming the line; so are --limit and --displace with tags
+subdiv_surface_error(surface_doo_sabin_semisharp 1 "'[^']*catmark_cube_creases1.obj' line 56: tag 'crease': the sharpness 5\\.0* is semi-sharp: --scheme doo-sabin takes 0 or 10 and above only"
   ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_cube_creases1.obj ${mesh_out} --scheme doo-sabin --levels 1)
+subdiv_surface_error(surface_doo_sabin_limit_with_creases 1 "--scheme doo-sabin refines with crease and corner tags, but its limit \\(--limit, --displace\\) does not take them: the limit of its creases is not derived"
+  ARGS surface ${SUBDIV_CLI_DIR}/octahedron_equator_crease.obj ${mesh_out} --scheme doo-sabin --levels 1 --limit)
+subdiv_surface_error(surface_doo_sabin_displace_with_creases 1 "--scheme doo-sabin refines with crease and corner tags, but its limit"
+  ARGS surface ${SUBDIV_CLI_DIR}/octahedron_equator_crease.obj ${mesh_out} --scheme doo-sabin --levels 1
+  --displace ${SUBDIV_CLI_DIR}/octahedron_heights_one.txt)
 # butterfly with creases: --sharp-angle 60 makes the 6 edges of the
 # tetrahedron (70.5 degrees) infinitely sharp, so every vertex is a corner and
 # every edge a crease of one edge, whose four-point rule with reflected ends
@@ -479,8 +495,11 @@ foreach(bad "200|--sharp-angle is an angle in degrees, from 0 to 180, not '200'"
   subdiv_surface_error(surface_sharp_angle_${value} 2 "${message}"
     ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out} --scheme catmull-clark --levels 1 --sharp-angle ${value})
 endforeach()
-subdiv_surface_error(surface_sharp_angle_other_scheme 1 "--scheme doo-sabin does not take"
-  ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out} --scheme doo-sabin --levels 1 --sharp-angle 60)
+# doo-sabin: --sharp-angle 60 makes the cube's 12 edges sharp, every vertex a
+# corner that keeps its point: two levels give the cube back
+subdiv_cli_test(surface_doo_sabin_sharp_angle ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out}
+  --scheme doo-sabin --levels 2 --sharp-angle 60
+  OUTPUT @WORK@/out.off VERTICES 8 FACES 6 CONTAINS "0 0 0" "1 0 0" "1 1 0" "0 1 0" "0 0 1" "1 0 1" "1 1 1" "0 1 1")
 # --split-non-manifold (CGAL::Subdiv::split_non_manifold): the three
 # triangles on one edge become three sheets (the edge's ends copied twice
 # each, corners), the bowtie's vertex two corners; a manifold file is read as
@@ -507,8 +526,13 @@ subdiv_surface_error(surface_split_unsplittable 1
   --split-non-manifold)
 subdiv_surface_error(surface_split_and_repair 2 "--repair and --split-non-manifold are two ways to read a non-manifold INPUT: one at a time"
   ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme loop --levels 1 --split-non-manifold --repair)
-subdiv_surface_error(surface_split_other_scheme 1 "--scheme doo-sabin does not take"
-  ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off ${mesh_out} --scheme doo-sabin --levels 1 --split-non-manifold)
+# doo-sabin splits the bowtie too: two triangles, whose corners all stay (a
+# border vertex with one face, and the split vertex's copies are corners)
+subdiv_cli_test(surface_doo_sabin_split_bowtie ARGS surface ${SUBDIV_CLI_DIR}/bowtie.off -o @WORK@/out.obj
+  --scheme doo-sabin --levels 1 --split-non-manifold
+  OUTPUT @WORK@/out.obj VERTICES 6 FACES 2
+  FILE @WORK@/out.obj
+  FILE_REGEX "\nt corner 1/1/0 [0-9]+ 10\nt corner 1/1/0 [0-9]+ 10\n$")
 
 # --- SIGTERM while writing removes the temporary file ---------------------------
 find_program(SUBDIV_SH sh)

@@ -694,6 +694,8 @@ TEST(SharpFeatures, polyhedron_3_refines_with_tags_as_surface_mesh)
   expect_polyhedron_as_surface_mesh("catmark_cubes_semisharp", Sd::Catmull_clark_mask<Mesh>(),
                                     Sd::Catmull_clark_mask<Polyhedron>());
   expect_polyhedron_as_surface_mesh("loop_cubes_semisharp", Sd::Loop_mask<Mesh>(), Sd::Loop_mask<Polyhedron>());
+  // Doo-Sabin's creases change the topology (welded corners): infinitely sharp tags
+  expect_polyhedron_as_surface_mesh("loop_icos_infsharp", Sd::Doo_sabin_mask<Mesh>(), Sd::Doo_sabin_mask<Polyhedron>());
 }
 
 // A cube with every edge of sharpness 1/2, in rational arithmetic: a corner

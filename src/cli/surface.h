@@ -45,6 +45,9 @@ struct Surface_scheme
   /// whether it takes semi-sharp values (the butterflies take infinitely
   /// sharp ones only)
   bool semi_sharp = true;
+  /// whether --limit and --displace take the tags too (not for doo-sabin:
+  /// `internal::Limit_takes_sharpness_tags`)
+  bool limit_sharp = true;
 };
 
 /// every scheme this build offers, in the order of --help

@@ -83,8 +83,9 @@ writing not included).
                         1 edges and corners, 2 edges only), t creasemethod
                         (normal or chaikin) and t smoothtriangles (catmark or
                         smooth), for loop, loop-warren, catmull-clark,
-                        linear (where they move no point), the butterflies
-                        and the sqrt3 schemes (infinitely sharp ones); an
+                        linear (where they move no point), the butterflies,
+                        the sqrt3 schemes and doo-sabin (infinitely sharp
+                        ones; doo-sabin without --limit, --displace); an
                         OBJ OUTPUT gets the children's tags (holes included),
                         OFF, PLY and STL leave the holes out. Other tags are
                         ignored, with a note.
@@ -130,10 +131,10 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
   --smooth-triangles    catmull-clark: OpenSubdiv's TRI_SUB_SMOOTH edge rule
                         next to triangles (or INPUT's tag)
   --sharp-angle DEGREES loop, loop-warren, catmull-clark, linear, the
-                        butterflies and the sqrt3 schemes: every edge whose
-                        two faces' normals make more than DEGREES (0 to 180)
-                        becomes infinitely sharp (CGAL's detect_sharp_edges),
-                        with the creases of INPUT
+                        butterflies, the sqrt3 schemes and doo-sabin: every
+                        edge whose two faces' normals make more than DEGREES
+                        (0 to 180) becomes infinitely sharp (CGAL's
+                        detect_sharp_edges), with the creases of INPUT
   --max-memory SIZE     refuse, before any work, a run whose output would take
                         more memory than SIZE (default: this machine's memory),
                         e.g. 8G, 512MB, 2GiB; the estimate is the output faces
@@ -261,6 +262,10 @@ int surface_command(const std::vector<std::string>& arguments)
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
+  if(tagged && !scheme.limit_sharp && (displace || args.has("--limit")))
+    throw Input_error("--scheme " + scheme.name +
+                      " refines with crease and corner tags, but its limit (--limit, --displace) does not take "
+                      "them: the limit of its creases is not derived");
   const Largest_coordinate largest = largest_coordinate(mesh);
   const std::vector<double> heights =
     displace ? read_heights(args.value("--displace"), mesh.number_of_vertices()) : std::vector<double>();

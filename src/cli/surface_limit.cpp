@@ -68,7 +68,7 @@ struct Project
   template <class Mask>
   void operator()(const Mask& mask) const
   {
-    if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
+    if constexpr(SD::internal::Limit_takes_sharpness_tags<Mask>::value)
       if(tags != nullptr) {
         SD::project_to_limit(mesh, mask, tag_parameters<Mask>(mesh, *tags));
         return;
@@ -89,7 +89,7 @@ struct Displace
   template <class Mask>
   void operator()(const Mask& mask) const
   {
-    if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
+    if constexpr(SD::internal::Limit_takes_sharpness_tags<Mask>::value)
       if(tags != nullptr) {
         SD::displace(mesh, mask, heights,
                      tag_parameters<Mask>(mesh, *tags).number_of_iterations(levels).max_memory(max_memory));
@@ -135,7 +135,7 @@ std::vector<double> read_heights(const std::string& path, std::size_t vertices)
 void project_surface_to_limit(Surface& mesh, const Surface_scheme& scheme, const Sharp_options* tags)
 {
   // subdivide_surface() and the command refuse the others first
-  CGAL_precondition(tags == nullptr || scheme.run_sharp);
+  CGAL_precondition(tags == nullptr || (scheme.run_sharp && scheme.limit_sharp));
   with_mask(scheme, mesh, tags != nullptr ? *tags : Sharp_options(), Project{mesh, tags});
 }
 

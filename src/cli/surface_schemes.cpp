@@ -45,6 +45,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   Surface_scheme scheme{name, description, run, triangles_only, true, Host::face_growth(), Host::peak_bytes_per_face(),
                         {}};
   scheme.semi_sharp = SD::internal::Takes_semi_sharp_tags<Mask>::value;
+  scheme.limit_sharp = SD::internal::Limit_takes_sharpness_tags<Mask>::value;
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto np = tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory);

@@ -189,7 +189,8 @@ public:
     const std::string who = caller + " (" + m.name() + ")";
     if constexpr(Host::face_centred) {
       static_assert(std::is_same<Tags, internal::No_sharpness_tags>::value,
-                    "this scheme does not take sharpness tags (edge_sharpness_map, vertex_sharpness_map) yet");
+                    "the limit of Doo-Sabin does not take sharpness tags (edge_sharpness_map, "
+                    "vertex_sharpness_map): the limit of its creases is not derived (subdivide() takes them)");
       return internal::dual_limit_rows(cached, m, mesh, who);
     } else {
       internal::Limit_rows<FT> result; // sized by sharpen() where there are tags
@@ -224,9 +225,9 @@ private:
     if constexpr(!std::is_same<Tags, internal::No_sharpness_tags>::value) {
       const auto m = mask<PolygonMesh, FT>();
       using M = std::decay_t<decltype(m)>;
-      static_assert(internal::Takes_sharpness_tags<M>::value,
+      static_assert(internal::Limit_takes_sharpness_tags<M>::value,
                     "the limit of this scheme does not take sharpness tags (edge_sharpness_map, "
-                    "vertex_sharpness_map) yet");
+                    "vertex_sharpness_map) yet (Doo-Sabin: the limit of its creases is not derived)");
       if constexpr(internal::Has_crease_curve<M>::value || M::split == Split::sqrt3) {
         tags.check(mesh, m, who);
         rows = internal::Limit_rows<FT>(num_vertices(mesh));

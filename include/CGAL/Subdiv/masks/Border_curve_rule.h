@@ -67,7 +67,9 @@ public:
   }
 
   /// the new vertex of a dual scheme on the border edge of `g` next to
-  /// source(g) (the even rule, offset 0 at source(g), 1 at target(g))
+  /// source(g) (the even rule, offset 0 at source(g), 1 at target(g)); also
+  /// on a crease edge (Doo-Sabin's creases), whose even rule (Chaikin's)
+  /// reaches its two ends only
   template <class Mesh, class Accumulator>
   void dual_point(const Mesh& mesh, typename boost::graph_traits<Mesh>::halfedge_descriptor g, Accumulator& acc) const
   {

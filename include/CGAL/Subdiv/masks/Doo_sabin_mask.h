@@ -6,6 +6,7 @@
 #include <CGAL/Subdiv/curves/Chaikin_scheme.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/masks/Border_curve_rule.h>
+#include <CGAL/Subdiv/masks/Sharp_rules.h>
 #include <CGAL/Subdiv/masks/cosines.h>
 #include <CGAL/Subdiv/views/Split.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
@@ -44,12 +45,26 @@ namespace Subdiv {
  * border by about a quarter of the border faces at each level; its interior
  * points are those of this mask (see the tests).
  *
+ * Creases (`edge_sharpness_map`, `vertex_sharpness_map` of `subdivide()`):
+ * infinitely sharp values only (0, or 10 and above; a semi-sharp value is
+ * refused, naming the edge or the vertex). A sharp edge is refined as a
+ * border on both of its sides: the corner at v of a face beside the sharp
+ * edge (u, v) goes to Chaikin's point 3/4 v + 1/4 u (the same border rule),
+ * and the two corners across the edge are one new vertex (`Dual_split`), so
+ * the crease polyline is refined by Chaikin's rule. A corner (a vertex
+ * sharpness of 10 and above, three sharp edges or more, or a face whose two
+ * edges at the vertex are sharp) keeps one new vertex at the vertex itself;
+ * a dart (one sharp edge) is refined smooth. The limit layer does not take
+ * the tags for this scheme (`internal::Limit_takes_sharpness_tags`).
+ *
  * \tparam Mesh a model of `FaceGraph`
  * \tparam FT the number type of the weights (by default the mesh's)
+ * \tparam Tagged whether the mask refines with the sharpness tags of a level
+ * (made by `subdivide()`)
  * \cgalModels `SurfaceSubdivisionMask`
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
-class Doo_sabin_mask
+template <class Mesh, class FT = internal::Mesh_FT<Mesh>, bool Tagged = false>
+class Doo_sabin_mask : public With_sharp_level<Doo_sabin_mask<Mesh, FT, Tagged>, Mesh, FT, Tagged>
 {
 public:
   using Polygon_mesh = Mesh;
@@ -61,11 +76,14 @@ public:
   Doo_sabin_mask() : m_border(Chaikin_scheme<FT>()) {}
 
   /// the same rules for another mesh type and number type
-  template <class OtherMesh, class OtherFT>
-  Doo_sabin_mask<OtherMesh, OtherFT> rebind() const
+  template <class OtherMesh, class OtherFT, bool OtherTagged = false>
+  Doo_sabin_mask<OtherMesh, OtherFT, OtherTagged> rebind() const
   {
-    return Doo_sabin_mask<OtherMesh, OtherFT>();
+    return Doo_sabin_mask<OtherMesh, OtherFT, OtherTagged>();
   }
+
+  /// the sharpness tags it takes are infinitely sharp ones
+  static constexpr bool takes_semi_sharp_tags = false;
 
   std::string name() const { return "Doo-Sabin"; }
   bool is_interpolating() const { return false; }
@@ -77,12 +95,12 @@ public:
     const Mesh& mesh = corner.mesh();
     const halfedge_descriptor h = corner.halfedge();
     const halfedge_descriptor n = next(h, mesh);
-    if(corner.border_before() && corner.border_after()) { // a corner with a single face: kept
+    if(corner.kept()) { // a corner with a single face (or a corner vertex): kept
       acc.add(target(h, mesh), FT(1));
       return;
     }
-    if(corner.border_before() || corner.border_after()) { // Chaikin on the border edge, from the corner
-      m_border.dual_point(mesh, corner.border_before() ? opposite(h, mesh) : n, acc);
+    if(corner.sharp_before() || corner.sharp_after()) { // Chaikin on the border or sharp edge, from the corner
+      m_border.dual_point(mesh, corner.sharp_before() ? opposite(h, mesh) : n, acc);
       return;
     }
     const int size = corner.face_size();

@@ -220,11 +220,22 @@ template <class Host>
 struct Has_edge_parents<Host, std::void_t<decltype(std::declval<const Host&>().edge_parents())>> : std::true_type
 {};
 
+/// whether a host names the old vertex of every new vertex (`vertex_parents()`):
+/// the hosts whose new vertices are not the old ones first (the dual split)
+template <class Host, class = void>
+struct Has_vertex_parents : std::false_type
+{};
+template <class Host>
+struct Has_vertex_parents<Host, std::void_t<decltype(std::declval<const Host&>().vertex_parents())>> : std::true_type
+{};
+
 /*
  * A sink of `refine_level` (refinement/refine_level.h): after the level, puts
  * the sharpness of every new edge in `edges` and of every new vertex in
- * `vertices` (each unless its type is CGAL's `Param_not_found`), from the tags of the old level (edge splits
- * only). The value written is the effective one: a border edge gets the
+ * `vertices` (each unless its type is CGAL's `Param_not_found`), from the tags of the old level: by
+ * the edge splits' numbering, or through the old edge and the old vertex that
+ * the host names (`edge_parents()`, `vertex_parents()`: the sqrt3 and the
+ * dual splits). The value written is the effective one: a border edge gets the
  * infinite sharpness 10, so that refining one level and then another gives
  * what two levels give, bit for bit.
  */
@@ -244,6 +255,10 @@ public:
     m_new_vertices = host.number_of_new_vertices();
     if constexpr(Has_edge_parents<Host>::value)
       m_parents = host.edge_parents();
+    if constexpr(Has_vertex_parents<Host>::value) {
+      m_vertex_parents = host.vertex_parents();
+      m_has_vertex_parents = true;
+    }
   }
 
   template <class Level>
@@ -255,7 +270,7 @@ public:
     if constexpr(!std::is_same<VertexMap, CGAL::internal_np::Param_not_found>::value) {
       const auto& vertices = level.elements().vertices;
       for(std::size_t j = 0; j < m_new_vertices; ++j)
-        put(*m_vertices, vertices[j], value<VertexMap>(m_level->child_vertex(j)));
+        put(*m_vertices, vertices[j], value<VertexMap>(child_vertex(j)));
     }
   }
 
@@ -268,6 +283,17 @@ private:
       return m_level->child_edge(k);
     using S = decltype(m_level->child_edge(k));
     return m_parents[k] == 0 ? S(0) : m_level->child_of_edge(m_parents[k] - 1);
+  }
+
+  // the sharpness of new vertex j: of the child of an old vertex, which is new
+  // vertex j of the edge splits and the one the host names otherwise
+  // (`vertex_parents()`: 0 for none, i + 1 for old vertex i)
+  auto child_vertex(std::size_t j) const
+  {
+    if(!m_has_vertex_parents)
+      return m_level->child_vertex(j);
+    using S = decltype(m_level->child_vertex(j));
+    return m_vertex_parents[j] == 0 ? S(0) : m_level->child_vertex(m_vertex_parents[j] - 1);
   }
 
   template <class Map, class S>
@@ -286,7 +312,9 @@ private:
   const VertexMap* m_vertices;
   std::size_t m_new_edges = 0;
   std::size_t m_new_vertices = 0;
-  std::vector<std::size_t> m_parents; // hosts with `edge_parents()` only
+  std::vector<std::size_t> m_parents;        // hosts with `edge_parents()` only
+  std::vector<std::size_t> m_vertex_parents; // hosts with `vertex_parents()` only
+  bool m_has_vertex_parents = false;
 };
 
 } // namespace internal

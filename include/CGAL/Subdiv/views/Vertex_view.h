@@ -296,7 +296,10 @@ private:
  * \ingroup PkgSubdivMasks
  * A face corner as a dual mask sees it: the corner of `face(h)` at
  * `target(h)`, whether the face's edges before and after the corner are on
- * the border, and the size of the face.
+ * the border, and the size of the face. With sharpness tags the host says
+ * which of the two edges are sharp (a crease, or the border) and whether the
+ * corner is kept at its vertex (`set_sharp`); without, the border edges are
+ * the sharp ones and a corner with both of them is kept.
  */
 template <class Mesh>
 class Corner_view
@@ -307,7 +310,8 @@ public:
 
   Corner_view(const Mesh& mesh, halfedge_descriptor h)
     : m_mesh(&mesh), m_halfedge(h), m_border_before(CGAL::is_border(opposite(h, mesh), mesh)),
-      m_border_after(CGAL::is_border(opposite(next(h, mesh), mesh), mesh))
+      m_border_after(CGAL::is_border(opposite(next(h, mesh), mesh), mesh)), m_sharp_before(m_border_before),
+      m_sharp_after(m_border_after), m_kept(m_border_before && m_border_after)
   {}
 
   const Mesh& mesh() const { return *m_mesh; }
@@ -318,6 +322,22 @@ public:
   bool border_before() const { return m_border_before; }
   /// whether the edge of `next(halfedge())` is on the border
   bool border_after() const { return m_border_after; }
+  /// whether the edge of `halfedge()` is sharp (on the border, or a crease
+  /// with tags): the corner then follows the curve rule along it
+  bool sharp_before() const { return m_sharp_before; }
+  /// whether the edge of `next(halfedge())` is sharp
+  bool sharp_after() const { return m_sharp_after; }
+  /// whether the corner stays at its vertex (a corner of the curve rule: a
+  /// face whose two edges at the vertex are both sharp, or with tags a
+  /// corner vertex)
+  bool kept() const { return m_kept; }
+  /// the sharp edges and the kept corner, as the host reads them from the tags of the level
+  void set_sharp(bool before, bool after, bool kept)
+  {
+    m_sharp_before = before;
+    m_sharp_after = after;
+    m_kept = kept;
+  }
   int face_size() const
   {
     int size = 0;
@@ -334,6 +354,9 @@ private:
   halfedge_descriptor m_halfedge;
   bool m_border_before;
   bool m_border_after;
+  bool m_sharp_before;
+  bool m_sharp_after;
+  bool m_kept;
 };
 
 namespace internal {
@@ -399,6 +422,17 @@ struct Takes_semi_sharp_tags : std::true_type
 {};
 template <class Mask>
 struct Takes_semi_sharp_tags<Mask, std::enable_if_t<!Mask::takes_semi_sharp_tags>> : std::false_type
+{};
+
+/// whether the limit layer takes sharpness tags for the mask: every mask
+/// that `subdivide()` refines with tags but Doo-Sabin's (the dual split),
+/// whose crease limit is not derived
+template <class Mask, class = void>
+struct Limit_takes_sharpness_tags : std::false_type
+{};
+template <class Mask>
+struct Limit_takes_sharpness_tags<Mask, std::enable_if_t<Takes_sharpness_tags<Mask>::value>>
+  : std::integral_constant<bool, Mask::split != Split::dual>
 {};
 
 /// whether the mask is a tagged copy (`With_sharp_rules`, `With_sharp_level`): its views come
