@@ -3,12 +3,13 @@
 # Subdivision_method_3 (issue: "compile time is part of the API").
 #
 #   bash src/scripts/compile_time.sh [--write-doc] [runs]     (default 5 runs)
-#   bash src/scripts/compile_time.sh --instructions
+#   bash src/scripts/compile_time.sh --instructions [--write-doc]
 #
 # --instructions counts, instead of timing, the instructions the compiler runs
 # for refine_only.cpp (valgrind's callgrind on g++ and its children, cc1plus
 # above all): the same count on every run, whatever else the machine does, so
-# a difference of 1 % is real. It takes about 2 minutes per probe.
+# a difference of 1 % is real. It takes about 2 minutes per probe; with
+# --write-doc it writes doc/compile_instructions.md.
 #
 # Compiles src/bench/compile_time/probe.cpp (read, refine, write) and
 # refine_only.cpp (the refinement alone) as every probe below `runs` times,
@@ -50,17 +51,39 @@ if [[ ${1:-} == --instructions ]]; then
       -I "$root/include" $f -c "$root/src/bench/compile_time/refine_only.cpp" -o "$out/$p.o" 2>/dev/null
     count[$p]=$(awk '/^summary:/ {s += $2} END {printf "%.0f", s}' "$out"/cg.*)
   done
-  echo "| program (refine_only.cpp) | instructions (G) | above Surface_mesh | vs Subdivision_method_3 |"
-  echo "|---|---|---|---|"
-  for p in read_write sm3_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_narrow_loop; do
-    ref=-
-    case $p in
-      *catmull_clark) ref=${count[sm3_catmull_clark]} ;;
-      *loop) ref=${count[sm3_loop]} ;;
-    esac
-    awk -v p="$p" -v c="${count[$p]}" -v b="${count[read_write]}" -v r="$ref" 'BEGIN {
-      printf "| %s | %.2f | %+.2f | %s |\n", p, c / 1e9, (c - b) / 1e9, r == "-" ? "-" : sprintf("%.3f", c / r) }'
-  done
+  instruction_table() {
+    echo "| program (refine_only.cpp) | instructions (G) | above Surface_mesh | vs Subdivision_method_3 |"
+    echo "|---|---|---|---|"
+    for p in read_write sm3_catmull_clark subdiv_narrow_catmull_clark sm3_loop subdiv_narrow_loop; do
+      ref=-
+      case $p in
+        *catmull_clark) ref=${count[sm3_catmull_clark]} ;;
+        *loop) ref=${count[sm3_loop]} ;;
+      esac
+      awk -v p="$p" -v c="${count[$p]}" -v b="${count[read_write]}" -v r="$ref" 'BEGIN {
+        printf "| %s | %.2f | %+.2f | %s |\n", p, c / 1e9, (c - b) / 1e9, r == "-" ? "-" : sprintf("%.3f", c / r) }'
+    done
+  }
+  instruction_table
+  if [[ ${2:-} == --write-doc ]]; then
+    {
+      echo "# Compile time, in instructions"
+      echo
+      echo "Written by \`src/scripts/compile_time.sh --instructions --write-doc\`; do not edit by hand."
+      echo "The instructions g++ and its children (cc1plus above all) run to compile"
+      echo "\`src/bench/compile_time/refine_only.cpp\` (a function that refines a \`Surface_mesh\` 3 levels)"
+      echo "with \`-std=c++17 -O2\`, counted by valgrind's callgrind: the same on every run, unlike the"
+      echo "CPU times of [compile_time.md](compile_time.md). \`subdiv_narrow_*\` include only the scheme's"
+      echo "header, \`sm3_*\` CGAL's \`<CGAL/subdivision_method_3.h>\`, \`read_write\` \`<CGAL/Surface_mesh.h>\` alone."
+      echo "The count includes g++'s garbage collections, which run when its heap has doubled"
+      echo "since the last one: a small change anywhere can add or remove one (0.4 to 0.9 G here)."
+      echo
+      instruction_table
+      echo
+      echo "($("$cxx" --version | head -1), $(date -u +%Y-%m-%d))"
+    } >"$root/doc/compile_instructions.md"
+    echo "wrote $root/doc/compile_instructions.md"
+  fi
   exit 0
 fi
 if [[ ${1:-} == --write-doc ]]; then

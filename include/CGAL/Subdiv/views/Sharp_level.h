@@ -59,17 +59,20 @@ public:
                          const std::string& scheme, bool infinitely_sharp_only = false)
   {
     const Mesh_numbering<Mesh> number(mesh);
-    const auto check = [&](const S& s, const std::string& what) {
-      require(s >= S(0), scheme + ": the sharpness of " + what + " is negative or NaN");
-      require(!infinitely_sharp_only || !Rules::is_semi_sharp(s),
-              scheme + ": " + what +
-                " is semi-sharp (above 0, below 10): this scheme takes infinitely sharp creases and corners "
-                "only (0, or 10 and above); semi-sharp values are for Loop, Catmull-Clark and bilinear");
+    // the message is built only for the element refused: this runs on every edge
+    const auto check = [&](const S& s, const char* element, std::size_t index) {
+      if(!(s >= S(0)))
+        refuse(Message() << scheme << ": the sharpness of " << element << " " << index << " is negative or NaN");
+      if(infinitely_sharp_only && Rules::is_semi_sharp(s))
+        refuse(Message() << scheme << ": " << element << " " << index
+                         << " is semi-sharp (above 0, below 10): this scheme takes infinitely sharp creases and "
+                            "corners only (0, or 10 and above); semi-sharp values are for Loop, Catmull-Clark and "
+                            "bilinear");
     };
     for(std::size_t e = 0; e < num_edges(mesh); ++e)
-      check(S(edge_sharpness(number.edge(e))), "edge " + std::to_string(e));
+      check(S(edge_sharpness(number.edge(e))), "edge", e);
     for(std::size_t i = 0; i < num_vertices(mesh); ++i)
-      check(S(vertex_sharpness(number.vertex(i))), "vertex " + std::to_string(i));
+      check(S(vertex_sharpness(number.vertex(i))), "vertex", i);
   }
 
   /// reads `edge_sharpness(e)` and `vertex_sharpness(v)` (callables, whose
