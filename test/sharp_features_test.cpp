@@ -1363,6 +1363,49 @@ TEST(SharpFeatures, tangent_rows_at_a_crease_and_a_corner_are_exact)
   EXPECT_EQ(normals[at(2, 1)], EK::Vector_3(0, 0, 1));
 }
 
+// Loop's crease tangent rows, exact in rationals: a fan of 6 triangles around
+// c = (0, 0, 0) (face i is (c, r_i, r_i+1), counter-clockwise), the edges to
+// r0 and r3 infinitely sharp. Far's first face at c is face 0, whose leading
+// edge (c, r0) is sharp: the crease ends are r0 and r3, the span faces 0 to 2
+// (k = 3). Along: (r0 - r3)/2; across, Far's k = 3 mask divided by sqrt 3:
+// r1 + r2 - c - (r0 + r3)/2; the normal is +z.
+TEST(SharpFeatures, loop_crease_tangent_rows_are_exact)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  Exact_mesh fan;
+  const auto c = fan.add_vertex(EK::Point_3(0, 0, 0));
+  const int ring[6][2] = {{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}};
+  std::vector<Exact_mesh::Vertex_index> r;
+  for(const auto& p : ring)
+    r.push_back(fan.add_vertex(EK::Point_3(p[0], p[1], 0)));
+  for(int i = 0; i < 6; ++i)
+    ASSERT_NE(fan.add_face(c, r[i], r[(i + 1) % 6]), Exact_mesh::null_face());
+  auto edges = fan.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  edges[fan.edge(fan.halfedge(c, r[0]))] = FT(10);
+  edges[fan.edge(fan.halfedge(c, r[3]))] = FT(10);
+  const auto np = Sd::parameters::edge_sharpness_map(edges);
+  const Sd::Limit_evaluator<Sd::Loop_mask<Exact_mesh>> evaluator;
+  const auto rows = evaluator.rows<FT>(fan, fan.points(), "test", Sd::internal::sharpness_tags_of<Exact_mesh, FT>(np));
+  using Row = std::map<std::uint32_t, FT>;
+  const auto row_of = [](const auto& stencil) {
+    Row row;
+    for(const auto& term : stencil)
+      if(term.second != FT(0))
+        row[term.first] = term.second;
+    return row;
+  };
+  const auto o = [](Exact_mesh::Vertex_index v) { return static_cast<std::uint32_t>(v.idx()); };
+  ASSERT_TRUE(rows.has_tangents[o(c)]);
+  EXPECT_EQ(row_of(rows.tangent[0][o(c)]), (Row{{o(r[0]), FT(1) / 2}, {o(r[3]), FT(-1) / 2}}));
+  EXPECT_EQ(row_of(rows.tangent[1][o(c)]),
+            (Row{{o(c), FT(-1)}, {o(r[1]), FT(1)}, {o(r[2]), FT(1)}, {o(r[0]), FT(-1) / 2}, {o(r[3]), FT(-1) / 2}}));
+  auto normals = fan.add_property_map<Exact_mesh::Vertex_index, EK::Vector_3>("v:normal").first;
+  Sd::limit_normals(fan, Sd::Loop_mask<Exact_mesh>(), normals, np);
+  EXPECT_EQ(normals[c], EK::Vector_3(0, 0, 1));
+}
+
 // displace() with tags: its levels refine the tags and its limit takes those
 // of the refined mesh, so zero heights carried through two levels of a cube
 // with 4 infinitely sharp edges and 8 semi-sharp ones (1.5: sharp on the

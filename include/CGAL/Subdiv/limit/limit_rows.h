@@ -339,7 +339,7 @@ std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> far_edge_or
  * out[e0 + i] (0 < i < k), d_i the corner two after v in the face of
  * out[e0 + i] (0 <= i < k; the diagonal of a quad):
  * - Loop: k = 1: (c0 + c1)/2 - v; k = 2: m_1 - v; k = 3: m_1 + m_2 - v -
- *   (c0 + c1)/2 (Far's divided by 3, 3, sqrt 3); k >= 4, theta = pi/k:
+ *   (c0 + c1)/2 (Far's divided by 6, 3, sqrt 3); k >= 4, theta = pi/k:
  *   2 (1 - cos theta) sum_i sin(i theta) m_i - sin(theta) (c0 + c1) (Far's
  *   divided by 3).
  * - Catmull-Clark: k = 1: (c0 + c1)/2 - v (Far's divided by 6); k = 2, the
