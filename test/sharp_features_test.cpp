@@ -29,8 +29,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -292,8 +294,8 @@ struct Osd_level
   std::vector<testing_utils::Double_point> limit;
 };
 
-/// every level up to `levels` of OpenSubdiv Far, from the same tags
-std::vector<Osd_level> opensubdiv_levels(const Tagged_shape& shape, Scheme scheme, int levels)
+/// OpenSubdiv Far's refiner of the shape, from the same tags, not refined yet
+std::unique_ptr<Osd::TopologyRefiner> opensubdiv_refiner(const Tagged_shape& shape, Scheme scheme)
 {
   std::vector<int> sizes, indices;
   for(std::size_t f = 0; f < shape.soup.number_of_faces(); ++f)
@@ -327,6 +329,13 @@ std::vector<Osd_level> opensubdiv_levels(const Tagged_shape& shape, Scheme schem
                                               : OpenSubdiv::Sdc::SCHEME_BILINEAR;
   std::unique_ptr<Osd::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, options)));
   EXPECT_TRUE(refiner != nullptr);
+  return refiner;
+}
+
+/// every level up to `levels` of OpenSubdiv Far, from the same tags
+std::vector<Osd_level> opensubdiv_levels(const Tagged_shape& shape, Scheme scheme, int levels)
+{
+  const std::unique_ptr<Osd::TopologyRefiner> refiner = opensubdiv_refiner(shape, scheme);
   if(refiner == nullptr)
     return {};
   Osd::TopologyRefiner::UniformOptions uniform(levels);
@@ -573,6 +582,208 @@ TEST_P(OpenSubdivShapes, refine_as_opensubdiv_far_does)
       if(!table_limit_at_2.empty())
         expect_limit_as_far(mesh, table_limit_at_2, limit_at_2, "limit stencil table after 2 levels");
     }
+  }
+}
+
+/// the vertices of each kind whose normals were compared with Far's (all shapes), by level (0, 2)
+struct Normal_counts
+{
+  std::size_t crease = 0, corner = 0, smooth = 0, skipped = 0;
+  std::size_t other_side = 0; // creases and corners where Far's first face is not ours
+};
+Normal_counts& normal_counts(int level)
+{
+  static Normal_counts counts[2];
+  return counts[level == 0 ? 0 : 1];
+}
+struct Print_normal_counts : testing::Environment
+{
+  void TearDown() override
+  {
+    for(int level : {0, 2}) {
+      const Normal_counts& n = normal_counts(level);
+      if(n.crease + n.corner + n.smooth > 0)
+        std::cout << "[ normals  ] as Far's at level " << level << ": " << n.crease << " creases, " << n.corner
+                  << " corners, " << n.smooth << " smooth vertices; not compared: " << n.other_side
+                  << " sharp vertices where Far's first face is another, " << n.skipped << " others" << std::endl;
+    }
+  }
+};
+testing::Environment* const print_normal_counts = testing::AddGlobalTestEnvironment(new Print_normal_counts);
+
+/*
+ * The limit normals of `levels` levels of the shape (0 or 2) with the tags of
+ * that level, against PrimvarRefiner::Limit's two tangents on Far's level
+ * (their cross product, normalised), to 1e-9: at every crease and corner
+ * (Far's rule of the vertex) and at the smooth vertices whose faces all have
+ * the scheme's size. Vertices are Far's by index on level 0, by position on
+ * level 2 (the refined levels number them differently). The tangent rows of
+ * a crease or a corner follow Far's order of the edges at the vertex, from
+ * its first face; on level 0 that is the mesh's first face at the vertex (the
+ * shape's face order is Far's), which the test checks (no vertex where
+ * Far's first sharp edge, or its first two edges at a corner, are not ours).
+ * On level 2, Far's first face comes from its refinement history and may be
+ * on the other side of a crease (another tangent plane): those vertices are
+ * counted and not compared. Not compared either: a smooth vertex with another
+ * face (Far's smooth tangent masks read every face as a quad, or a triangle,
+ * which is not the limit there; ours go one level further), a smooth vertex
+ * of valence 2 (Far: corner masks), a vertex where Far's tangents are
+ * parallel (ours are then the faces' normals), a vertex in no face. With
+ * `folded` (the back-to-back shapes, whose surface is two sheets folded onto
+ * each other at their rim), a smooth vertex's normal is compared up to its
+ * sign: on the fold, the sign of t0 x t1 depends on the edge the tangent
+ * masks start from, which is Far's on one side and ours on the other.
+ */
+void expect_normals_as_far(const Tagged_shape& shape, Scheme scheme, int levels, bool folded)
+{
+  const std::unique_ptr<Osd::TopologyRefiner> refiner = opensubdiv_refiner(shape, scheme);
+  ASSERT_TRUE(refiner != nullptr);
+  if(levels > 0) {
+    Osd::TopologyRefiner::UniformOptions uniform(levels);
+    uniform.fullTopologyInLastLevel = true;
+    refiner->RefineUniform(uniform);
+  }
+  Osd::PrimvarRefinerReal<double> primvar(*refiner);
+  std::vector<Osd_vertex> points;
+  for(const auto& p : shape.soup.points)
+    points.push_back(Osd_vertex{{p[0], p[1], p[2]}});
+  for(int level = 1; level <= levels; ++level) {
+    std::vector<Osd_vertex> finer(static_cast<std::size_t>(refiner->GetLevel(level).GetNumVertices()));
+    const Osd_vertex* source = points.data();
+    Osd_vertex* destination = finer.data();
+    primvar.Interpolate(level, source, destination);
+    points.swap(finer);
+  }
+  std::vector<Osd_vertex> position(points.size()), tan1(points.size()), tan2(points.size());
+  primvar.Limit(points, position, tan1, tan2);
+  const Osd::TopologyLevel& far = refiner->GetLevel(levels);
+
+  // ours, on a copy without the isolated vertices (which the limit refuses)
+  Mesh mesh = tagged_mesh(shape);
+  for(int level = 0; level < levels; ++level)
+    refine_once(mesh, scheme, shape);
+  auto origin = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:test_origin", 0).first;
+  for(auto v : mesh.vertices())
+    origin[v] = v.idx();
+  const std::vector<testing_utils::Double_point> control = testing_utils::double_points(mesh);
+  std::vector<Mesh::Vertex_index> isolated;
+  for(auto v : mesh.vertices())
+    if(mesh.is_isolated(v))
+      isolated.push_back(v);
+  for(auto v : isolated)
+    mesh.remove_vertex(v);
+  mesh.collect_garbage();
+  auto normals = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:test_normal").first;
+  with_mask_of(scheme, shape,
+               [&](const auto& mask) { Sd::limit_normals(mesh, mask, normals, tag_parameters(mesh, shape)); });
+  const Edge_sharpness sharpness = mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first;
+
+  // Far's vertex at each of ours: the same index on level 0, the same point on level 2
+  const double scale = testing_utils::diagonal(control);
+  std::vector<int> by_x(points.size());
+  for(std::size_t i = 0; i < by_x.size(); ++i)
+    by_x[i] = static_cast<int>(i);
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return points[a].p[0] < points[b].p[0]; });
+  const auto far_vertex = [&](const testing_utils::Double_point& p) {
+    int found = -1;
+    const double tolerance = 1e-10 * scale;
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), p.x() - tolerance,
+                               [&](int a, double x) { return points[a].p[0] < x; });
+    for(; it != by_x.end() && points[*it].p[0] <= p.x() + tolerance; ++it) {
+      const Osd_vertex& q = points[*it];
+      if(std::abs(q.p[1] - p.y()) <= tolerance && std::abs(q.p[2] - p.z()) <= tolerance) {
+        if(found >= 0)
+          return -1; // ambiguous
+        found = *it;
+      }
+    }
+    return found;
+  };
+  const auto same_point = [&](int far_index, Mesh::Vertex_index ours) {
+    const Osd_vertex& q = points[far_index];
+    const testing_utils::Double_point p = mesh.point(ours);
+    return std::sqrt(CGAL::squared_distance(p, testing_utils::Double_point(q.p[0], q.p[1], q.p[2]))) <= 1e-10 * scale;
+  };
+  const auto far_end = [&](int i, int e) {
+    const auto ends = far.GetEdgeVertices(e);
+    return ends[0] == i ? ends[1] : ends[0];
+  };
+
+  const std::size_t regular = scheme == Scheme::catmark ? 4 : 3;
+  const Sd::internal::Mesh_numbering<Mesh> number(mesh);
+  Normal_counts& counts = normal_counts(levels);
+  for(auto v : mesh.vertices()) {
+    const int i = levels == 0 ? static_cast<int>(origin[v]) : far_vertex(mesh.point(v));
+    if(i < 0 || far.GetVertexFaces(i).size() == 0) {
+      ++counts.skipped;
+      continue;
+    }
+    const OpenSubdiv::Sdc::Crease::Rule rule = far.GetVertexRule(i);
+    const bool crease = rule == OpenSubdiv::Sdc::Crease::RULE_CREASE;
+    const bool corner = rule == OpenSubdiv::Sdc::Crease::RULE_CORNER;
+    bool comparable = crease || corner || far.GetVertexEdges(i).size() != 2;
+    for(int f : far.GetVertexFaces(i))
+      comparable = comparable && (crease || corner || far.GetFaceVertices(f).size() == static_cast<int>(regular));
+    const Kernel::Vector_3 t1(tan1[i].p[0], tan1[i].p[1], tan1[i].p[2]), t2(tan2[i].p[0], tan2[i].p[1], tan2[i].p[2]);
+    const Kernel::Vector_3 n = CGAL::cross_product(t1, t2);
+    const double length = std::sqrt(n.squared_length());
+    comparable = comparable && length > 1e-10 * std::sqrt(t1.squared_length() * t2.squared_length());
+    if(!comparable) {
+      ++counts.skipped;
+      continue;
+    }
+    if(crease || corner) { // is Far's first face ours? (the edges that choose the side)
+      const auto far_edges = far.GetVertexEdges(i);
+      const auto out = Sd::internal::far_edge_order(Sd::Vertex_view<Mesh>(mesh, v), number);
+      ASSERT_EQ(static_cast<std::size_t>(far_edges.size()), out.size()) << "vertex " << i;
+      bool same = true;
+      if(corner)
+        for(int k = 0; k < 2; ++k)
+          same = same && same_point(far_end(i, far_edges[k]), mesh.target(out[k]));
+      else {
+        int far_first = 0, first = 0;
+        while(far.GetEdgeSharpness(far_edges[far_first]) <= 0 && !far.IsEdgeBoundary(far_edges[far_first]))
+          ++far_first;
+        while(!mesh.is_border(mesh.edge(out[first])) && sharpness[mesh.edge(out[first])] <= 0)
+          ++first;
+        same = same_point(far_end(i, far_edges[far_first]), mesh.target(out[first]));
+      }
+      if(!same) {
+        EXPECT_NE(levels, 0) << "vertex " << i << ": Far's first face is not ours on level 0";
+        ++counts.other_side;
+        continue;
+      }
+    }
+    const Kernel::Vector_3 theirs = n / length;
+    const double apart = std::sqrt((normals[v] - theirs).squared_length());
+    EXPECT_LT(
+      folded && !crease && !corner ? (std::min)(apart, std::sqrt((normals[v] + theirs).squared_length())) : apart, 1e-9)
+      << "level " << levels << ", vertex " << i
+      << (crease   ? " (crease)"
+          : corner ? " (corner)"
+                   : " (smooth)")
+      << ": ours " << normals[v] << ", Far's " << theirs;
+    ++(crease ? counts.crease : corner ? counts.corner : counts.smooth);
+  }
+}
+
+// Limit normals at levels 0 and 2 against Far's (`expect_normals_as_far`).
+// Not asked of Far: the non-manifold shapes (Far's tangents crash there),
+// the bilinear ones, the one whose limit we refuse (a triangle valence 2).
+TEST_P(OpenSubdivShapes, limit_normals_as_opensubdiv_far_does)
+{
+  const Conformance_case& c = GetParam();
+  if(c.scheme == Scheme::bilinear || is_non_manifold_shape(c.shape) || has_triangle_valence_2_vertex(c.shape))
+    return;
+  const Tagged_shape shape = read_shape(c.shape);
+  const bool folded = c.shape.find("back2back") != std::string::npos;
+  {
+    SCOPED_TRACE("level 0");
+    expect_normals_as_far(shape, c.scheme, 0, folded);
+  }
+  {
+    SCOPED_TRACE("level 2");
+    expect_normals_as_far(shape, c.scheme, 2, folded);
   }
 }
 
@@ -1088,6 +1299,113 @@ TEST(SharpFeatures, tagged_vertices_need_no_analysis)
   EXPECT_EQ(creased.point(a), EK::Point_3(FT(1) / 6, FT(1) / 6, 0));
   EXPECT_EQ(creased.point(b), EK::Point_3(FT(2) / 3, FT(1) / 6, 0));
   EXPECT_EQ(creased.point(c), EK::Point_3(FT(1) / 6, FT(2) / 3, 0));
+}
+
+// Tangent rows at a crease and a corner, exact in rationals: a 3 x 3 grid of
+// unit quads in z = 0 (vertex (i, j) is i + 4 j, face (i, j) is i + 3 j, all
+// counter-clockwise), the row y = 1 infinitely sharp, vertex (2, 1) a corner.
+// At the crease vertex v = (1, 1), Far's first face is face 0, whose leading
+// edge (v, (0, 1)) is sharp: the edges out of v counter-clockwise are to
+// c0 = (0, 1), m = (1, 0), c1 = (2, 1), (1, 2), the span is faces 0 and 1
+// (below the crease). Along it: (c0 - c1)/2, the cubic B-spline's left
+// eigenvector for 1/2; across it, the regular Catmull-Clark case of Far's
+// crease tangent masks: (4 m + d0 + d1 - c0 - c1 - 4 v)/6 with the diagonals
+// d0 = (0, 0), d1 = (2, 0). At the corner (2, 1), whose first face is face 1:
+// the ends of its two edges there minus the corner, (1, 1) - v and (2, 0) - v.
+// Both normals are +z, the side from which the faces are counter-clockwise.
+TEST(SharpFeatures, tangent_rows_at_a_crease_and_a_corner_are_exact)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  Exact_mesh grid;
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i)
+      grid.add_vertex(EK::Point_3(i, j, 0));
+  const auto at = [](int i, int j) { return Exact_mesh::Vertex_index(static_cast<Exact_mesh::size_type>(i + 4 * j)); };
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i)
+      ASSERT_NE(grid.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)), Exact_mesh::null_face());
+  auto edges = grid.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  auto corners = grid.add_property_map<Exact_mesh::Vertex_index, FT>("v:sharpness", FT(0)).first;
+  for(int i = 0; i < 3; ++i)
+    edges[grid.edge(grid.halfedge(at(i, 1), at(i + 1, 1)))] = FT(10);
+  corners[at(2, 1)] = FT(10);
+  const auto np = Sd::parameters::edge_sharpness_map(edges).vertex_sharpness_map(corners);
+  const Sd::Limit_evaluator<Sd::Catmull_clark_mask<Exact_mesh>> evaluator;
+  const auto rows =
+    evaluator.rows<FT>(grid, grid.points(), "test", Sd::internal::sharpness_tags_of<Exact_mesh, FT>(np));
+  using Row = std::map<std::uint32_t, FT>;
+  const auto row_of = [](const auto& stencil) {
+    Row row;
+    for(const auto& term : stencil)
+      if(term.second != FT(0))
+        row[term.first] = term.second;
+    return row;
+  };
+  const auto o = [&](int i, int j) { return static_cast<std::uint32_t>(at(i, j).idx()); };
+  const std::uint32_t crease = o(1, 1), corner = o(2, 1);
+  ASSERT_TRUE(rows.has_tangents[crease]);
+  EXPECT_EQ(row_of(rows.tangent[0][crease]), (Row{{o(0, 1), FT(1) / 2}, {o(2, 1), FT(-1) / 2}}));
+  EXPECT_EQ(row_of(rows.tangent[1][crease]), (Row{{o(1, 1), FT(-4) / 6},
+                                                  {o(1, 0), FT(4) / 6},
+                                                  {o(0, 0), FT(1) / 6},
+                                                  {o(2, 0), FT(1) / 6},
+                                                  {o(0, 1), FT(-1) / 6},
+                                                  {o(2, 1), FT(-1) / 6}}));
+  ASSERT_TRUE(rows.has_tangents[corner]);
+  EXPECT_EQ(row_of(rows.tangent[0][corner]), (Row{{o(1, 1), FT(1)}, {o(2, 1), FT(-1)}}));
+  EXPECT_EQ(row_of(rows.tangent[1][corner]), (Row{{o(2, 0), FT(1)}, {o(2, 1), FT(-1)}}));
+  // and the crease limit of the same rule: 1/6, 2/3, 1/6 along the crease
+  EXPECT_EQ(row_of(rows.position[crease]), (Row{{o(0, 1), FT(1) / 6}, {o(1, 1), FT(2) / 3}, {o(2, 1), FT(1) / 6}}));
+
+  auto normals = grid.add_property_map<Exact_mesh::Vertex_index, EK::Vector_3>("v:normal").first;
+  Sd::limit_normals(grid, Sd::Catmull_clark_mask<Exact_mesh>(), normals, np);
+  EXPECT_EQ(normals[at(1, 1)], EK::Vector_3(0, 0, 1));
+  EXPECT_EQ(normals[at(2, 1)], EK::Vector_3(0, 0, 1));
+}
+
+// Loop's crease tangent rows, exact in rationals: a fan of 6 triangles around
+// c = (0, 0, 0) (face i is (c, r_i, r_i+1), counter-clockwise), the edges to
+// r0 and r3 infinitely sharp. Far's first face at c is face 0, whose leading
+// edge (c, r0) is sharp: the crease ends are r0 and r3, the span faces 0 to 2
+// (k = 3). Along: (r0 - r3)/2; across, Far's k = 3 mask divided by sqrt 3:
+// r1 + r2 - c - (r0 + r3)/2; the normal is +z.
+TEST(SharpFeatures, loop_crease_tangent_rows_are_exact)
+{
+  using EK = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  using Exact_mesh = CGAL::Surface_mesh<EK::Point_3>;
+  using FT = EK::FT;
+  Exact_mesh fan;
+  const auto c = fan.add_vertex(EK::Point_3(0, 0, 0));
+  const int ring[6][2] = {{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}};
+  std::vector<Exact_mesh::Vertex_index> r;
+  for(const auto& p : ring)
+    r.push_back(fan.add_vertex(EK::Point_3(p[0], p[1], 0)));
+  for(int i = 0; i < 6; ++i)
+    ASSERT_NE(fan.add_face(c, r[i], r[(i + 1) % 6]), Exact_mesh::null_face());
+  auto edges = fan.add_property_map<Exact_mesh::Edge_index, FT>("e:sharpness", FT(0)).first;
+  edges[fan.edge(fan.halfedge(c, r[0]))] = FT(10);
+  edges[fan.edge(fan.halfedge(c, r[3]))] = FT(10);
+  const auto np = Sd::parameters::edge_sharpness_map(edges);
+  const Sd::Limit_evaluator<Sd::Loop_mask<Exact_mesh>> evaluator;
+  const auto rows = evaluator.rows<FT>(fan, fan.points(), "test", Sd::internal::sharpness_tags_of<Exact_mesh, FT>(np));
+  using Row = std::map<std::uint32_t, FT>;
+  const auto row_of = [](const auto& stencil) {
+    Row row;
+    for(const auto& term : stencil)
+      if(term.second != FT(0))
+        row[term.first] = term.second;
+    return row;
+  };
+  const auto o = [](Exact_mesh::Vertex_index v) { return static_cast<std::uint32_t>(v.idx()); };
+  ASSERT_TRUE(rows.has_tangents[o(c)]);
+  EXPECT_EQ(row_of(rows.tangent[0][o(c)]), (Row{{o(r[0]), FT(1) / 2}, {o(r[3]), FT(-1) / 2}}));
+  EXPECT_EQ(row_of(rows.tangent[1][o(c)]),
+            (Row{{o(c), FT(-1)}, {o(r[1]), FT(1)}, {o(r[2]), FT(1)}, {o(r[0]), FT(-1) / 2}, {o(r[3]), FT(-1) / 2}}));
+  auto normals = fan.add_property_map<Exact_mesh::Vertex_index, EK::Vector_3>("v:normal").first;
+  Sd::limit_normals(fan, Sd::Loop_mask<Exact_mesh>(), normals, np);
+  EXPECT_EQ(normals[c], EK::Vector_3(0, 0, 1));
 }
 
 // displace() with tags: its levels refine the tags and its limit takes those

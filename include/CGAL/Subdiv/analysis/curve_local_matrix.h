@@ -11,6 +11,8 @@
 #include <CGAL/Subdiv/curves/curve_mask.h>
 #include <CGAL/Subdiv/errors.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 
 #include <cstddef>
@@ -141,27 +143,30 @@ bool reproduces_linear(const Scheme& scheme)
 namespace internal {
 
 /*
- * Solves the left fixed-point problem v^T S = v^T, sum v = 1, by Gaussian
- * elimination on the (n+1) x n system [S^T - I; 1 ... 1] v = [0; 1].
+ * Solves the left eigenproblem v^T S = lambda v^T, w . v = 1, by Gaussian
+ * elimination on the (n+1) x n system [S^T - lambda I; w^T] v = [0; 1].
  * Exact types: the first nonzero pivot, exact zero tests. Floating point:
  * partial pivoting and a relative tolerance. Returns an empty vector if the
- * solution is not unique (1 not a simple eigenvalue) or does not exist.
+ * solution is not unique (lambda not a simple eigenvalue) or does not exist
+ * (w orthogonal to the eigenvector).
  */
 template <class FT>
-std::vector<FT> normalised_left_fixed_vector(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S)
+std::vector<FT> normalised_left_eigenvector(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S,
+                                            const FT& lambda, const std::vector<FT>& w)
 {
   const int n = static_cast<int>(S.rows());
+  CGAL_precondition(w.size() == static_cast<std::size_t>(n));
   std::vector<std::vector<FT>> A(static_cast<std::size_t>(n + 1),
                                  std::vector<FT>(static_cast<std::size_t>(n + 1), FT(0)));
   FT scale(1);
   for(int r = 0; r < n; ++r)
     for(int c = 0; c < n; ++c) {
-      A[r][c] = S(c, r) - (r == c ? FT(1) : FT(0));
+      A[r][c] = S(c, r) - (r == c ? lambda : FT(0));
       if(internal::absolute(A[r][c]) > scale)
         scale = internal::absolute(A[r][c]);
     }
-  for(int c = 0; c < n; ++c)
-    A[n][c] = FT(1);
+  for(int k = 0; k < n; ++k)
+    A[n][k] = w[k];
   A[n][n] = FT(1); // right-hand side column
   int row = 0;
   for(int col = 0; col < n; ++col, ++row) {
@@ -192,9 +197,19 @@ std::vector<FT> normalised_left_fixed_vector(const Eigen::Matrix<FT, Eigen::Dyna
   if(!internal::is_negligible(A[n][n], scale))
     return {};
   std::vector<FT> v(static_cast<std::size_t>(n));
-  for(int c = 0; c < n; ++c)
-    v[c] = A[c][n] / A[c][c];
+  for(int k = 0; k < n; ++k)
+    v[k] = A[k][n] / A[k][k];
   return v;
+}
+
+/*
+ * The left fixed vector of S: v^T S = v^T, sum v = 1
+ * (`normalised_left_eigenvector` for 1); empty if 1 is not a simple eigenvalue.
+ */
+template <class FT>
+std::vector<FT> normalised_left_fixed_vector(const Eigen::Matrix<FT, Eigen::Dynamic, Eigen::Dynamic>& S)
+{
+  return normalised_left_eigenvector(S, FT(1), std::vector<FT>(static_cast<std::size_t>(S.rows()), FT(1)));
 }
 
 /*

@@ -231,7 +231,8 @@ private:
       if constexpr(internal::Has_crease_curve<M>::value || M::split == Split::sqrt3) {
         tags.check(mesh, m, who);
         rows = internal::Limit_rows<FT>(num_vertices(mesh));
-        std::vector<FT> crease;
+        std::vector<FT> crease, along;
+        internal::Sharp_tangents tangents = internal::Sharp_tangents::none;
         if constexpr(M::split == Split::sqrt3) {
           // the crease rule is the border rule: the border analysis' limit,
           // at the regular border vertex (3 triangles; the border rule reads
@@ -241,10 +242,18 @@ private:
           } catch(const Bad_input& e) {
             throw Bad_input(who + ": " + e.what());
           }
-        } else
+        } else {
           crease = internal::crease_limit_weights(m.crease_curve());
+          // the tangents of Loop and Catmull-Clark (not of the butterflies,
+          // whose crease rule interpolates: no along-crease tangent)
+          along = internal::crease_tangent_weights(m.crease_curve());
+          if(!along.empty())
+            tangents =
+              M::split == Split::quad ? internal::Sharp_tangents::catmull_clark : internal::Sharp_tangents::loop;
+        }
         // the rules of this level do not depend on how sharpness decays
-        return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)), crease);
+        return internal::sharp_limit_rows(rows, mesh, tags.level(mesh, internal::border_corners_of(m)), crease, along,
+                                          tangents);
       }
     }
     (void)tags, (void)who;
@@ -322,7 +331,11 @@ public:
    * vector. Never NaN. The normals are computed in double and converted to the
    * kernel's FT. With sharpness tags (`edge_sharpness_map`,
    * `vertex_sharpness_map`, as in `project_to_limit()`), corners and creases
-   * take the face normals (they have no tangent rows yet).
+   * of Loop and Catmull-Clark take tangent rows as OpenSubdiv Far's
+   * `PrimvarRefiner::Limit` does (`internal::sharp_limit_rows`): along and
+   * across a crease, on the side of Far's first face at the vertex, and along
+   * the two edges of that face at a corner (see doc/sharp_features.md); the
+   * other schemes' take the face normals.
    */
   template <class PolygonMesh, class NormalMap, class NamedParameters = parameters::Default_named_parameters>
   void limit_normals(const PolygonMesh& mesh, NormalMap normals,

@@ -53,8 +53,9 @@ struct Limit_stencil_tables
  * sharpness tags (`edge_sharpness_map`, `vertex_sharpness_map`,
  * `crease_method`): the limit rows of the refined mesh then take the tags of
  * its level, as `project_to_limit()` does (a corner stays, a crease goes to
- * the limit of its curve rule, and neither has tangent rows yet: its
- * `has_tangents` is false).
+ * the limit of its curve rule; Loop's and Catmull-Clark's have tangent rows
+ * as OpenSubdiv Far's, see `internal::sharp_limit_rows`; the other schemes'
+ * have none: their `has_tangents` is false).
  * \throws Bad_input as `subdivide()` and `project_to_limit()` do.
  */
 template <class Mask, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
