@@ -182,6 +182,29 @@ TYPED_TEST(Curve_schemes, lane_riesenfeld_on_points_equals_the_masks)
     }
 }
 
+// The masks are read off in closed form (binomials); here they are checked
+// against the doubling and averagings themselves, run on a unit impulse at
+// source c, at every degree: new point 2j + r holds the weight of offset c - j
+// in rule r (every offset of both rules, and the zeros outside them).
+TYPED_TEST(Curve_schemes, bspline_masks_are_lane_riesenfeld_on_an_impulse_at_every_degree)
+{
+  using FT = typename TypeParam::FT;
+  using P = typename TypeParam::Point_2;
+  for(int k = 1; k <= S::Uniform_bspline_scheme<FT>::max_degree; ++k) {
+    const S::Uniform_bspline_scheme<FT> scheme(k);
+    const int n = 2 * k + 6, c = n / 2;
+    std::vector<P> impulse(n, P(0, 0));
+    impulse[c] = P(1, 0);
+    const auto refined = S::lane_riesenfeld_refine(impulse, k, S::parameters::closed(true));
+    ASSERT_EQ(refined.size(), std::size_t(2 * n));
+    for(int j = 0; j < n; ++j)
+      for(int r : {0, 1})
+        EXPECT_TRUE(
+          same_points(std::vector<P>{refined[2 * j + r]}, std::vector<P>{P(S::rule(scheme, r).weight(c - j), 0)}))
+          << "degree " << k << " rule " << r << " offset " << c - j;
+  }
+}
+
 TYPED_TEST(Curve_schemes, cubic_bspline_closed_form_rules)
 {
   using FT = typename TypeParam::FT;

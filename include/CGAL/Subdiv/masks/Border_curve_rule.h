@@ -3,10 +3,8 @@
 #ifndef CGAL_SUBDIV_MASKS_BORDER_CURVE_RULE_H
 #define CGAL_SUBDIV_MASKS_BORDER_CURVE_RULE_H
 
-#include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
-#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -37,11 +35,11 @@ public:
   template <class CurveScheme>
   explicit Border_curve_rule(const CurveScheme& scheme)
   {
-    Stencil<int, FT> even, odd;
+    Sorted_terms even, odd;
     scheme.even_mask(even);
     scheme.odd_mask(odd);
-    m_even = sorted(even);
-    m_odd = sorted(odd);
+    m_even = std::move(even.terms);
+    m_odd = std::move(odd.terms);
   }
 
   /// the new position of the border vertex `v` (a primal scheme's even rule
@@ -142,19 +140,25 @@ public:
   }
 
 private:
-  static std::vector<std::pair<int, FT>> sorted(const Stencil<int, FT>& stencil)
+  // the accumulator the curve masks are read with: their terms by increasing
+  // offset, the weights of an offset added up. A plain insertion: a mask has
+  // a handful of terms, and this costs every program that refines a border
+  // less to compile than a Stencil sorted afterwards
+  struct Sorted_terms
   {
-    // a stable insertion sort: a mask has a handful of terms, and a plain loop
-    // costs every program that refines a border less to compile than std::stable_sort
     std::vector<std::pair<int, FT>> terms;
-    for(const auto& term : stencil.terms()) {
-      auto at = terms.end();
-      while(at != terms.begin() && term.first < std::prev(at)->first)
-        --at;
-      terms.insert(at, term);
+
+    void add(int offset, const FT& weight)
+    {
+      auto at = terms.begin();
+      while(at != terms.end() && at->first < offset)
+        ++at;
+      if(at != terms.end() && at->first == offset)
+        at->second += weight;
+      else
+        terms.emplace(at, offset, weight);
     }
-    return terms;
-  }
+  };
 
   template <class Mesh, class Accumulator>
   static void add_along(const std::vector<std::pair<int, FT>>& mask, const Mesh& mesh,
