@@ -154,6 +154,34 @@ Mesh bundled(const std::string& name)
   return mesh;
 }
 
+/// the points of a Surface_mesh, in the order of its vertices
+template <class M>
+std::vector<typename M::Point> points_of(const M& mesh)
+{
+  std::vector<typename M::Point> points;
+  for(auto v : vertices(mesh))
+    points.push_back(mesh.point(v));
+  return points;
+}
+
+/// same points in the same order, and the same faces with the same corners
+template <class M>
+bool same_mesh(const M& a, const M& b)
+{
+  if(points_of(a) != points_of(b) || num_faces(a) != num_faces(b))
+    return false;
+  for(auto f : faces(a)) {
+    std::vector<std::size_t> fa, fb;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a))
+      fa.push_back(v.idx());
+    for(auto v : CGAL::vertices_around_face(halfedge(f, b), b))
+      fb.push_back(v.idx());
+    if(fa != fb)
+      return false;
+  }
+  return true;
+}
+
 /// the message of the Bad_input that `call` throws, or "no exception"
 template <class Call>
 std::string bad_input_message(const Call& call)

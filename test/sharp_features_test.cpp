@@ -196,22 +196,30 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
                                         .isolated_vertices(Sd::Isolated_vertices::keep));
 }
 
+/// removes the isolated vertices of `mesh` (the limit refuses them) and
+/// returns a map from each vertex left to its index before the removal
+Mesh::Property_map<Mesh::Vertex_index, std::size_t> remove_isolated_vertices_keeping_origin(Mesh& mesh)
+{
+  auto origin = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:test_origin", 0).first;
+  for(auto v : mesh.vertices())
+    origin[v] = v.idx();
+  std::vector<Mesh::Vertex_index> isolated;
+  for(auto v : mesh.vertices())
+    if(mesh.is_isolated(v))
+      isolated.push_back(v);
+  for(auto v : isolated)
+    mesh.remove_vertex(v);
+  mesh.collect_garbage();
+  return origin;
+}
+
 /// the limit positions of the vertices of the tagged `mesh`, in its order (a
 /// copy, its isolated vertices removed, projected with its tags; an isolated
 /// vertex keeps its point)
 std::vector<testing_utils::Double_point> tagged_limit(const Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
 {
   Mesh copy = mesh;
-  auto origin = copy.add_property_map<Mesh::Vertex_index, std::size_t>("v:test_origin", 0).first;
-  for(auto v : copy.vertices())
-    origin[v] = v.idx();
-  std::vector<Mesh::Vertex_index> isolated;
-  for(auto v : copy.vertices())
-    if(copy.is_isolated(v))
-      isolated.push_back(v);
-  for(auto v : isolated)
-    copy.remove_vertex(v);
-  copy.collect_garbage();
+  const auto origin = remove_isolated_vertices_keeping_origin(copy);
   const auto np = Sd::parameters::edge_sharpness_map(copy.property_map<Mesh::Edge_index, double>("e:sharpness").first)
                     .vertex_sharpness_map(copy.property_map<Mesh::Vertex_index, double>("v:sharpness").first);
   if(scheme == Scheme::catmark)
@@ -662,17 +670,8 @@ void expect_normals_as_far(const Tagged_shape& shape, Scheme scheme, int levels,
   Mesh mesh = tagged_mesh(shape);
   for(int level = 0; level < levels; ++level)
     refine_once(mesh, scheme, shape);
-  auto origin = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:test_origin", 0).first;
-  for(auto v : mesh.vertices())
-    origin[v] = v.idx();
   const std::vector<testing_utils::Double_point> control = testing_utils::double_points(mesh);
-  std::vector<Mesh::Vertex_index> isolated;
-  for(auto v : mesh.vertices())
-    if(mesh.is_isolated(v))
-      isolated.push_back(v);
-  for(auto v : isolated)
-    mesh.remove_vertex(v);
-  mesh.collect_garbage();
+  const auto origin = remove_isolated_vertices_keeping_origin(mesh);
   auto normals = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:test_normal").first;
   with_mask_of(scheme, shape,
                [&](const auto& mask) { Sd::limit_normals(mesh, mask, normals, tag_parameters(mesh, shape)); });

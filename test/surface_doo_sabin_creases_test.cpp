@@ -22,6 +22,8 @@
 #include <vector>
 
 namespace S = CGAL::Subdiv;
+using testing_utils::points_of;
+using testing_utils::same_mesh;
 using K = CGAL::Simple_cartesian<double>;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
@@ -126,33 +128,6 @@ std::set<Segment> segments_of(const std::vector<PE>& points, bool closed)
   for(std::size_t k = 0; k + (closed ? 0 : 1) < points.size(); ++k)
     segments.insert(segment(points[k], points[(k + 1) % points.size()]));
   return segments;
-}
-
-template <class M>
-std::vector<typename M::Point> points_of(const M& mesh)
-{
-  std::vector<typename M::Point> points;
-  for(auto v : vertices(mesh))
-    points.push_back(mesh.point(v));
-  return points;
-}
-
-// same points in the same order, same faces
-template <class M>
-bool same_mesh(const M& a, const M& b)
-{
-  if(points_of(a) != points_of(b) || num_faces(a) != num_faces(b))
-    return false;
-  for(auto f : faces(a)) {
-    std::vector<std::size_t> fa, fb;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a))
-      fa.push_back(v.idx());
-    for(auto v : CGAL::vertices_around_face(halfedge(f, b), b))
-      fb.push_back(v.idx());
-    if(fa != fb)
-      return false;
-  }
-  return true;
 }
 
 bool has_point(const Exact_mesh& mesh, const PE& p)

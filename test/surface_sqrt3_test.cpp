@@ -28,6 +28,8 @@
 #include <vector>
 
 namespace S = CGAL::Subdiv;
+using testing_utils::points_of;
+using testing_utils::same_mesh;
 using K = CGAL::Simple_cartesian<double>;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
@@ -56,33 +58,6 @@ std::size_t border_edges(const Mesh& mesh)
   for(auto e : edges(mesh))
     count += mesh.is_border(e);
   return count;
-}
-
-template <class M>
-std::vector<typename M::Point> points_of(const M& mesh)
-{
-  std::vector<typename M::Point> points;
-  for(auto v : vertices(mesh))
-    points.push_back(mesh.point(v));
-  return points;
-}
-
-// same points in the same order, same faces
-template <class M>
-bool same_mesh(const M& a, const M& b)
-{
-  if(points_of(a) != points_of(b) || num_faces(a) != num_faces(b))
-    return false;
-  for(auto f : faces(a)) {
-    std::vector<std::size_t> fa, fb;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a))
-      fa.push_back(v.idx());
-    for(auto v : CGAL::vertices_around_face(halfedge(f, b), b))
-      fb.push_back(v.idx());
-    if(fa != fb)
-      return false;
-  }
-  return true;
 }
 
 // a regular triangulated N x N grid in lattice coordinates (an affine image
