@@ -28,6 +28,7 @@
 #endif
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -194,6 +195,18 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
                                         .crease_method(shape.method)
                                         .face_hole_map(holes)
                                         .isolated_vertices(Sd::Isolated_vertices::keep));
+}
+
+/// the nonzero terms of a limit row, by source: rows compared whatever the
+/// order of their terms
+template <class FT, class Stencil>
+std::map<std::uint32_t, FT> nonzero_terms(const Stencil& stencil)
+{
+  std::map<std::uint32_t, FT> row;
+  for(const auto& term : stencil)
+    if(term.second != FT(0))
+      row[term.first] = term.second;
+  return row;
 }
 
 /// removes the isolated vertices of `mesh` (the limit refuses them) and
@@ -1335,13 +1348,7 @@ TEST(SharpFeatures, tangent_rows_at_a_crease_and_a_corner_are_exact)
   const auto rows =
     evaluator.rows<FT>(grid, grid.points(), "test", Sd::internal::sharpness_tags_of<Exact_mesh, FT>(np));
   using Row = std::map<std::uint32_t, FT>;
-  const auto row_of = [](const auto& stencil) {
-    Row row;
-    for(const auto& term : stencil)
-      if(term.second != FT(0))
-        row[term.first] = term.second;
-    return row;
-  };
+  const auto row_of = [](const auto& stencil) { return nonzero_terms<FT>(stencil); };
   const auto o = [&](int i, int j) { return static_cast<std::uint32_t>(at(i, j).idx()); };
   const std::uint32_t crease = o(1, 1), corner = o(2, 1);
   ASSERT_TRUE(rows.has_tangents[crease]);
@@ -1390,13 +1397,7 @@ TEST(SharpFeatures, loop_crease_tangent_rows_are_exact)
   const Sd::Limit_evaluator<Sd::Loop_mask<Exact_mesh>> evaluator;
   const auto rows = evaluator.rows<FT>(fan, fan.points(), "test", Sd::internal::sharpness_tags_of<Exact_mesh, FT>(np));
   using Row = std::map<std::uint32_t, FT>;
-  const auto row_of = [](const auto& stencil) {
-    Row row;
-    for(const auto& term : stencil)
-      if(term.second != FT(0))
-        row[term.first] = term.second;
-    return row;
-  };
+  const auto row_of = [](const auto& stencil) { return nonzero_terms<FT>(stencil); };
   const auto o = [](Exact_mesh::Vertex_index v) { return static_cast<std::uint32_t>(v.idx()); };
   ASSERT_TRUE(rows.has_tangents[o(c)]);
   EXPECT_EQ(row_of(rows.tangent[0][o(c)]), (Row{{o(r[0]), FT(1) / 2}, {o(r[3]), FT(-1) / 2}}));
