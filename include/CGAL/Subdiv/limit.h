@@ -9,5 +9,6 @@
 
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
 #include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
+#include <CGAL/Subdiv/limit/project_to_limit.h>
 
 #endif // CGAL_SUBDIV_LIMIT_H

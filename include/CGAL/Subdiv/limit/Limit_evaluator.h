@@ -17,6 +17,8 @@
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/points.h>
 #include <CGAL/Subdiv/limit/limit_rows.h>
+#include <CGAL/Subdiv/limit/limit_values.h>
+#include <CGAL/Subdiv/limit/sharp_limit_rows.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Subdiv/views/Sharpness_tags.h>
@@ -35,82 +37,6 @@
 
 namespace CGAL {
 namespace Subdiv {
-namespace internal {
-
-inline std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-inline double norm(const std::array<double, 3>& a)
-{
-  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
-
-template <class Point>
-std::array<double, 3> to_double3(const Point& p)
-{
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
-
-// a row applied to points: sum w (p - ORIGIN), in the points' number type
-template <class Point, class FT, class PointOf>
-Point apply_row(const Stencil<std::uint32_t, FT>& row, const PointOf& point_of)
-{
-  Point_vector<Point> sum = CGAL::NULL_VECTOR;
-  for(const auto& term : row)
-    sum = sum + (point_of(term.first) - CGAL::ORIGIN) * term.second;
-  return CGAL::ORIGIN + sum;
-}
-
-// a row applied to numbers (carried heights): sum w x
-template <class FT, class ValueOf>
-FT apply_value_row(const Stencil<std::uint32_t, FT>& row, const ValueOf& value_of)
-{
-  FT sum(0);
-  for(const auto& term : row)
-    sum = sum + value_of(term.first) * term.second;
-  return sum;
-}
-
-// a row summing to 0 applied to points, relative to `centre`: sum w (p - centre), in double
-template <class FT, class PointOf>
-std::array<double, 3> apply_difference_row(const Stencil<std::uint32_t, FT>& row, const PointOf& point_of,
-                                           const std::array<double, 3>& centre)
-{
-  std::array<double, 3> t{0, 0, 0};
-  for(const auto& term : row) {
-    const std::array<double, 3> p = to_double3(point_of(term.first));
-    const double w = CGAL::to_double(term.second);
-    for(int d = 0; d < 3; ++d)
-      t[d] += w * (p[d] - centre[d]);
-  }
-  return t;
-}
-
-/// no height channel
-struct No_heights
-{};
-
-/// whether the mask has sharp rules with a crease curve (Loop, Catmull-Clark)
-template <class Mask, class = void>
-struct Has_crease_curve : std::false_type
-{};
-template <class Mask>
-struct Has_crease_curve<Mask, std::void_t<decltype(std::declval<const Mask&>().crease_curve())>> : std::true_type
-{};
-
-// what the evaluation finds at one vertex
-template <class Point>
-struct Vertex_limit
-{
-  Point limit;
-  Point_FT<Point> height = Point_FT<Point>(0); // limit of the carried heights, if any
-  std::array<std::array<double, 3>, 2> tangent{};
-  bool tangents = false; // whether the tangent vectors give the tangent plane
-};
-
-} // namespace internal
 
 /*!
  * \ingroup PkgSubdivAnalysis
@@ -540,46 +466,6 @@ private:
   Mask m_mask;
   mutable std::map<std::pair<int, bool>, std::shared_ptr<Limit_masks>> m_cache;
 };
-
-/*!
- * \ingroup PkgSubdivAnalysis
- * moves every vertex of `mesh` to its limit position under the scheme of
- * `mask`, e.g. `project_to_limit(mesh, Loop_mask<Mesh>())`; see
- * `Limit_evaluator::project_to_limit()`. Interpolating schemes leave the
- * points where they are (their limit masks are the unit vector of the centre).
- * \throws Bad_input for a mesh the scheme does not apply to, a vertex whose
- * configuration the analysis does not cover (Doo-Sabin: an interior vertex of
- * valence 2).
- */
-template <class PolygonMesh, class Mask, class NamedParameters = parameters::Default_named_parameters>
-void project_to_limit(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = parameters::default_values())
-{
-  Limit_evaluator<Mask>(mask).project_to_limit(mesh, np);
-}
-
-/*!
- * \ingroup PkgSubdivAnalysis
- * writes the unit limit normal of every vertex into `normals`, e.g.
- * `limit_normals(mesh, Catmull_clark_mask<Mesh>(), normal_map)`; see
- * `Limit_evaluator::limit_normals()` (tangent masks, fallback to face normals).
- */
-template <class PolygonMesh, class Mask, class NormalMap, class NamedParameters = parameters::Default_named_parameters>
-void limit_normals(const PolygonMesh& mesh, const Mask& mask, NormalMap normals,
-                   const NamedParameters& np = parameters::default_values())
-{
-  Limit_evaluator<Mask>(mask).limit_normals(mesh, normals, np);
-}
-
-/*!
- * \ingroup PkgSubdivAnalysis
- * displacement mapping with the scheme of `mask`; see `Limit_evaluator::displace()`.
- */
-template <class PolygonMesh, class Mask, class Height, class NamedParameters = parameters::Default_named_parameters>
-void displace(PolygonMesh& mesh, const Mask& mask, const Height& height,
-              const NamedParameters& np = parameters::default_values())
-{
-  Limit_evaluator<Mask>(mask).displace(mesh, height, np);
-}
 
 } // namespace Subdiv
 } // namespace CGAL
