@@ -3,7 +3,7 @@
 #ifndef CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
 #define CGAL_SUBDIV_HOSTS_DUAL_SPLIT_H
 
-#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Dual_crease_topology.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
@@ -14,9 +14,6 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
-#include <cstdint>
-#include <limits>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -143,24 +140,27 @@ public:
   Dual_split(const Mesh& mesh, const Mask& mask) : Dual_split(mesh)
   {
     if constexpr(internal::Refines_with_tags<Mask>::value)
-      read_creases(*mask.sharp_level());
+      m_sharp = m_creases.read(m_mesh, m_number, m_corner, m_halfedge_of_corner, *mask.sharp_level());
     else
       (void)mask;
   }
 
-  std::size_t number_of_new_vertices() const { return m_sharp ? m_vertex_corner.size() : m_corner_count; }
+  std::size_t number_of_new_vertices() const { return m_sharp ? m_creases.number_of_new_vertices() : m_corner_count; }
   std::size_t number_of_new_faces() const
   {
-    return m_sharp ? m_face_parents.size() : num_faces(m_mesh) + m_interior_count + m_vertex_face_count;
+    return m_sharp ? m_creases.number_of_new_faces() : num_faces(m_mesh) + m_interior_count + m_vertex_face_count;
   }
-  std::size_t number_of_new_edges() const { return m_sharp ? m_sharp_edge_count : m_edge_count + m_closing_count; }
+  std::size_t number_of_new_edges() const
+  {
+    return m_sharp ? m_creases.number_of_new_edges() : m_edge_count + m_closing_count;
+  }
 
   /// the ordinals of the old elements that the new ones are numbered by
   const internal::Mesh_numbering<Mesh>& numbering() const { return m_number; }
 
   Vertex_origin origin(std::size_t j) const
   {
-    return {Origin_kind::corner, m_sharp ? corner(m_halfedge_of_corner[m_vertex_corner[j]]) : j};
+    return {Origin_kind::corner, m_sharp ? corner(m_halfedge_of_corner[m_creases.first_corner(j)]) : j};
   }
 
   /// the mask's weights of new vertex j (the corner of ordinal j) to `acc`;
@@ -172,9 +172,10 @@ public:
       mask.corner_node(Corner_view<Mesh>(m_mesh, m_halfedge_of_corner[j]), acc);
       return;
     }
-    Corner_view<Mesh> view(m_mesh, m_halfedge_of_corner[m_vertex_corner[j]]);
-    const unsigned char kind = m_vertex_kind[j];
-    view.set_sharp((kind & before) != 0, (kind & after) != 0, (kind & kept) != 0);
+    using Creases = internal::Dual_crease_topology<Mesh>;
+    Corner_view<Mesh> view(m_mesh, m_halfedge_of_corner[m_creases.first_corner(j)]);
+    const unsigned char kind = m_creases.kind(j);
+    view.set_sharp((kind & Creases::before) != 0, (kind & Creases::after) != 0, (kind & Creases::kept) != 0);
     mask.corner_node(view, acc);
   }
 
@@ -184,7 +185,7 @@ public:
   std::vector<std::size_t> edge_parents() const
   {
     if(m_sharp)
-      return m_edge_parents;
+      return m_creases.edge_parents();
     std::vector<std::size_t> parents(number_of_new_edges(), 0);
     for(std::size_t c = 0; c < m_corner_count; ++c) {
       const halfedge_descriptor h = m_halfedge_of_corner[c];
@@ -198,7 +199,7 @@ public:
   /// for old vertex i (the one new vertex of a corner vertex), 0 for none
   std::vector<std::size_t> vertex_parents() const
   {
-    return m_sharp ? m_vertex_parents : std::vector<std::size_t>(number_of_new_vertices(), 0);
+    return m_sharp ? m_creases.vertex_parents() : std::vector<std::size_t>(number_of_new_vertices(), 0);
   }
 
   /// the new faces (made in this thread, whatever `loop`)
@@ -217,7 +218,7 @@ public:
   internal::Face_soup faces() const
   {
     if(m_sharp)
-      return sharp_faces();
+      return m_creases.faces();
     internal::Face_soup soup(m_corner_count, m_edge_count + m_closing_count);
     soup.reserve(number_of_new_faces(), 2 * m_corner_count + 4 * m_interior_count);
 
@@ -261,229 +262,8 @@ public:
   }
 
 private:
-  using Index = std::uint32_t;
-  static constexpr Index none = (std::numeric_limits<Index>::max)();
-  // what the mask is told of a corner with creases (`Corner_view::set_sharp`)
-  static constexpr unsigned char before = 1, after = 2, kept = 4;
-
-  /*
-   * The topology with the creases of `level` (a `internal::Sharp_level`):
-   * see "Creases" above. Leaves `m_sharp` false where the level has no
-   * sharp edge inside the mesh and no corner vertex.
-   */
-  template <class Level>
-  void read_creases(const Level& level)
-  {
-    const std::size_t edge_count = num_edges(m_mesh), vertex_count = num_vertices(m_mesh);
-    std::vector<unsigned char> sharp(edge_count, 0);
-    bool creases = false;
-    for(std::size_t e = 0; e < edge_count; ++e) {
-      sharp[e] = level.is_sharp_edge(e) ? 1 : 0;
-      creases = creases || (sharp[e] != 0 && !CGAL::is_border(m_number.edge(e), m_mesh));
-    }
-    // by vertex ordinal: 0 smooth or dart (its corners apart), 1 crease, 2 corner (one new vertex)
-    std::vector<unsigned char> kind(vertex_count, 0);
-    for(std::size_t i = 0; i < vertex_count; ++i) {
-      const vertex_descriptor v = m_number.vertex(i);
-      const Vertex_rule rule = level.vertex_view(v).rule();
-      if(rule == Vertex_rule::corner) {
-        kind[i] = 2;
-        creases = true;
-      } else if(rule == Vertex_rule::crease) {
-        kind[i] = 1;
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m_mesh))
-          if(!CGAL::is_border(h, m_mesh) && sharp[m_number(h) >> 1] && sharp[m_number(next(h, m_mesh)) >> 1])
-            kind[i] = 2; // a sector of one face: a corner of the curve, kept (as on the border)
-      }
-    }
-    if(!creases)
-      return; // the border alone: the split without tags
-    m_sharp = true;
-    const auto is_sharp = [&](halfedge_descriptor h) { return sharp[m_number(h) >> 1] != 0; };
-
-    // new vertices: by corner, the first corner of each new vertex naming it
-    std::vector<Index> by_vertex(vertex_count, none), by_halfedge(2 * edge_count, none);
-    std::vector<Index> vertex_of_corner(m_corner_count);
-    for(std::size_t c = 0; c < m_corner_count; ++c) {
-      const halfedge_descriptor h = m_halfedge_of_corner[c];
-      const std::size_t v = m_number(target(h, m_mesh));
-      Index* slot = nullptr;
-      unsigned char what = 0;
-      if(kind[v] == 2) {
-        slot = &by_vertex[v];
-        what = kept;
-      } else if(kind[v] == 1 && is_sharp(h)) {
-        slot = &by_halfedge[m_number(opposite(h, m_mesh))]; // Chaikin's point on the edge from v
-        what = before;
-      } else if(kind[v] == 1 && is_sharp(next(h, m_mesh))) {
-        slot = &by_halfedge[m_number(next(h, m_mesh))];
-        what = after;
-      }
-      if(slot != nullptr && *slot != none) {
-        vertex_of_corner[c] = *slot;
-        continue;
-      }
-      const Index j = static_cast<Index>(m_vertex_corner.size());
-      m_vertex_corner.push_back(static_cast<Index>(c));
-      m_vertex_kind.push_back(what);
-      m_vertex_parents.push_back(what == kept ? v + 1 : 0);
-      vertex_of_corner[c] = j;
-      if(slot != nullptr)
-        *slot = j;
-    }
-    const auto id = [&](halfedge_descriptor h) { return vertex_of_corner[corner(h)]; };
-
-    // new faces, as runs of new vertices; a run of fewer than 3 distinct vertices is no face
-    std::vector<Index> run;
-    const auto add_face = [&](std::size_t parent) {
-      std::size_t size = 0;
-      for(std::size_t k = 0; k < run.size(); ++k)
-        if(size == 0 || run[k] != run[size - 1])
-          run[size++] = run[k];
-      while(size > 1 && run[size - 1] == run[0])
-        --size;
-      if(size >= 3) {
-        m_face_vertices.insert(m_face_vertices.end(), run.begin(), run.begin() + static_cast<std::ptrdiff_t>(size));
-        m_face_ends.push_back(m_face_vertices.size());
-        m_face_parents.push_back(static_cast<Index>(parent));
-      }
-      run.clear();
-    };
-    for(face_descriptor f : CGAL::faces(m_mesh)) { // face faces
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        run.push_back(id(h));
-      add_face(m_number(f));
-    }
-    for(auto e : edges(m_mesh)) { // edge quads
-      if(CGAL::is_border(e, m_mesh))
-        continue;
-      const halfedge_descriptor h = halfedge(e, m_mesh), o = opposite(h, m_mesh);
-      run = {id(h), id(prev(h, m_mesh)), id(o), id(prev(o, m_mesh))};
-      add_face(m_number(face(h, m_mesh)));
-    }
-    std::vector<halfedge_descriptor> around;
-    for(vertex_descriptor v : vertices(m_mesh)) { // vertex faces, one per sector of a crease vertex
-      const unsigned char what = kind[m_number(v)];
-      if(what == 2)
-        continue;
-      halfedge_descriptor first = halfedge(v, m_mesh);
-      bool border = false;
-      const int k = faces_around(v, &first, &border);
-      if(k < 3)
-        continue;
-      around.clear();
-      halfedge_descriptor h = first;
-      for(int i = 0; i < k; ++i, h = prev(opposite(h, m_mesh), m_mesh))
-        around.push_back(h); // the edge of around[i] lies between around[i] and around[i + 1]
-      // a sector starts after a sharp edge (on the border, at the first corner)
-      std::size_t start = 0;
-      if(what == 1 && !border)
-        while(!is_sharp(around[(start + around.size() - 1) % around.size()]))
-          ++start;
-      halfedge_descriptor sector = around[start]; // the first corner of the sector
-      for(std::size_t i = 0; i < around.size(); ++i) {
-        const halfedge_descriptor c = around[(start + i) % around.size()];
-        if(run.empty())
-          sector = c;
-        run.push_back(id(c));
-        if(what == 1 && is_sharp(c)) // the end of a sector
-          add_face(m_number(face(sector, m_mesh)));
-      }
-      if(!run.empty())
-        add_face(m_number(face(sector, m_mesh)));
-    }
-    // the new crease edges: along a sharp edge between two welded or kept
-    // ends (one that ends at a dart does not go on), and across a crease
-    // vertex between its two Chaikin points (the cut corner of the curve)
-    std::vector<unsigned char> along(edge_count, 0);
-    for(std::size_t e = 0; e < edge_count; ++e) {
-      const halfedge_descriptor h = halfedge(m_number.edge(e), m_mesh);
-      along[e] = sharp[e] != 0 && kind[m_number(source(h, m_mesh))] != 0 && kind[m_number(target(h, m_mesh))] != 0;
-    }
-    std::vector<Cut> cuts;
-    for(std::size_t i = 0; i < vertex_count; ++i) {
-      if(kind[i] != 1)
-        continue;
-      Cut cut{none, none, 0};
-      for(halfedge_descriptor h : CGAL::halfedges_around_source(m_number.vertex(i), m_mesh)) {
-        const Index w = by_halfedge[m_number(h)];
-        if(w == none)
-          continue;
-        (cut.a == none ? cut.a : cut.b) = w;
-        cut.edge = m_number(h) >> 1;
-      }
-      if(cut.b != none)
-        cuts.push_back(cut);
-    }
-    number_sharp_edges(along, cuts);
-  }
-
-  // two new vertices whose edge is a child of old edge `edge`
-  struct Cut
-  {
-    Index a, b;
-    std::size_t edge;
-  };
-
-  // the new edges of the faces with creases: one per pair of new vertices,
-  // halfedge 2e from the lower to the higher; the edges of the face faces
-  // along the old edges of `along` and the edges of `cuts` are children
-  void number_sharp_edges(const std::vector<unsigned char>& along, const std::vector<Cut>& cuts)
-  {
-    std::unordered_map<std::uint64_t, Index> edge_of;
-    edge_of.reserve(2 * m_face_vertices.size());
-    m_face_halfedges.resize(m_face_vertices.size());
-    std::vector<unsigned char> used;
-    std::size_t face_face_corner = 0; // the face faces come first, corner by corner
-    for(std::size_t f = 0, begin = 0; f < m_face_ends.size(); begin = m_face_ends[f++]) {
-      const std::size_t end = m_face_ends[f];
-      for(std::size_t k = begin; k < end; ++k) {
-        const Index a = m_face_vertices[k], b = m_face_vertices[k + 1 < end ? k + 1 : begin];
-        const std::uint64_t key = (std::uint64_t(a < b ? a : b) << 32) | (a < b ? b : a);
-        auto found = edge_of.emplace(key, static_cast<Index>(m_sharp_edge_count));
-        if(found.second) {
-          ++m_sharp_edge_count;
-          m_edge_parents.push_back(0);
-          used.push_back(0);
-          used.push_back(0);
-        }
-        const std::size_t e = found.first->second, halfedge_id = 2 * e + (a < b ? 0 : 1);
-        internal::require(used[halfedge_id] == 0,
-                          "Doo-Sabin with creases: the refined faces would meet along an edge the same way (a "
-                          "configuration of sharp edges that the dual split cannot refine)");
-        used[halfedge_id] = 1;
-        m_face_halfedges[k] = static_cast<Index>(halfedge_id);
-      }
-      if(f < num_faces(m_mesh)) { // a face face: its edge from corner k - 1 to corner k runs along that old edge
-        for(std::size_t k = begin; k < end; ++k, ++face_face_corner) {
-          const halfedge_descriptor h = m_halfedge_of_corner[face_face_corner];
-          const std::size_t old_edge = m_number(h) >> 1;
-          if(along[old_edge] != 0) {
-            const std::size_t previous = k == begin ? end - 1 : k - 1;
-            m_edge_parents[m_face_halfedges[previous] >> 1] = old_edge + 1;
-          }
-        }
-      }
-    }
-    for(const Cut& cut : cuts) {
-      const auto found =
-        edge_of.find((std::uint64_t(cut.a < cut.b ? cut.a : cut.b) << 32) | (cut.a < cut.b ? cut.b : cut.a));
-      if(found != edge_of.end())
-        m_edge_parents[found->second] = cut.edge + 1;
-    }
-  }
-
-  internal::Face_soup sharp_faces() const
-  {
-    internal::Face_soup soup(m_vertex_corner.size(), m_sharp_edge_count);
-    soup.reserve(m_face_parents.size(), m_face_vertices.size());
-    for(std::size_t f = 0, begin = 0; f < m_face_ends.size(); begin = m_face_ends[f++]) {
-      for(std::size_t k = begin; k < m_face_ends[f]; ++k)
-        soup.corner(m_face_vertices[k], m_face_halfedges[k]);
-      soup.close_face(m_face_parents[f]);
-    }
-    return soup;
-  }
+  using Index = typename internal::Dual_crease_topology<Mesh>::Index;
+  static constexpr Index none = internal::Dual_crease_topology<Mesh>::none;
 
   std::size_t corner(halfedge_descriptor h) const { return m_corner[m_number(h)]; }
 
@@ -496,19 +276,7 @@ private:
   // h <- prev(opposite(h)))
   int faces_around(vertex_descriptor v, halfedge_descriptor* first = nullptr, bool* border = nullptr) const
   {
-    int k = 0;
-    halfedge_descriptor border_in = boost::graph_traits<Mesh>::null_halfedge();
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m_mesh)) {
-      if(CGAL::is_border(h, m_mesh))
-        border_in = h;
-      else
-        ++k;
-    }
-    if(border)
-      *border = border_in != boost::graph_traits<Mesh>::null_halfedge();
-    if(first && border_in != boost::graph_traits<Mesh>::null_halfedge())
-      *first = prev(opposite(border_in, m_mesh), m_mesh);
-    return k;
+    return internal::dual_faces_around(m_mesh, v, first, border);
   }
 
   const Mesh& m_mesh;
@@ -521,17 +289,9 @@ private:
   std::size_t m_edge_count;        // new edges but the closing ones
   std::size_t m_vertex_face_count; // vertices with 3 or more faces
   std::size_t m_closing_count;     // border vertices with 3 or more faces
-  // with creases (`read_creases`)
+  // with creases: the child topology of the creases, if any (`m_sharp`)
   bool m_sharp = false;
-  std::vector<Index> m_vertex_corner;        // by new vertex: its first corner (ordinal)
-  std::vector<unsigned char> m_vertex_kind;  // by new vertex: before, after, kept
-  std::vector<std::size_t> m_vertex_parents; // by new vertex: see vertex_parents()
-  std::vector<Index> m_face_vertices;        // the new faces' vertices, face after face
-  std::vector<std::size_t> m_face_ends;      // one past the last vertex of each new face
-  std::vector<Index> m_face_parents;         // by new face
-  std::vector<Index> m_face_halfedges;       // by face vertex: the halfedge id to the next
-  std::vector<std::size_t> m_edge_parents;   // by new edge: see edge_parents()
-  std::size_t m_sharp_edge_count = 0;
+  internal::Dual_crease_topology<Mesh> m_creases;
 };
 
 /// `Split::dual` is refined by `Dual_split`
