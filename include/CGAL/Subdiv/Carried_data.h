@@ -3,18 +3,22 @@
 #ifndef CGAL_SUBDIV_CARRIED_DATA_H
 #define CGAL_SUBDIV_CARRIED_DATA_H
 
+#include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/parallel.h>
+#include <CGAL/Subdiv/masks/Linear_quad_mask.h>
+#include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/Inherited_face_map.h>
+#include <CGAL/Subdiv/refinement/carried_values.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
-#include <CGAL/number_utils.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -26,16 +30,36 @@ namespace Subdiv {
 
 /*!
  * \ingroup PkgSubdivFunctions
+ * How `Carried_data` interpolates a vertex map: OpenSubdiv's vertex and
+ * varying primvar data.
+ */
+enum class Interpolation {
+  /// with the scheme's rules: the weights of the new points
+  smooth,
+  /// with the rules of the linear scheme of the same split
+  /// (`Linear_quad_mask` for Catmull-Clark, `Linear_triangle_mask` for Loop and
+  /// the butterflies): an old vertex keeps its value, an edge point gets the
+  /// mean of the edge's ends, a face point the mean of the face's corners;
+  /// Doo-Sabin and the sqrt3 schemes have no such scheme and refuse it
+  linear
+};
+
+/*!
+ * \ingroup PkgSubdivFunctions
  * Per-element data that `subdivide()` carries to the refined mesh besides the
  * points.
  *
- * - `vertex_map(map)`: a vertex property map whose values form a vector space
- *   (a scalar, a `Vector_3`, a colour or UV stored as an Eigen vector, ...):
- *   every new vertex gets the combination of old values that the scheme's mask
- *   gives its point, with the same weights (so data is interpolated exactly as
- *   the geometry is). The value type needs `value * weight` and `value + value`;
- *   the weight is the mask's `FT` when the value type is that `FT`, a `double`
- *   otherwise.
+ * - `vertex_map(map)`, `vertex_map(map, Interpolation::linear)`: a vertex
+ *   property map; every new vertex gets the combination of old values that the
+ *   scheme's mask gives its point, with the same weights (so data is
+ *   interpolated exactly as the geometry is), or with `Interpolation::linear`
+ *   the weights of the linear scheme. The values are scalars, vectors
+ *   (`Vector_2`, `Vector_3`, Eigen vectors, any type with `value * weight` and
+ *   `value + value`), points (`Point_2` UVs, `Point_3`), or `CGAL::IO::Color`
+ *   (combined in double, then rounded and clamped to [0, 255]). The weight is
+ *   the mask's `FT` when the values are made of it (the `FT` itself, or a
+ *   kernel object of a kernel with that `FT`: exact values stay exact), a
+ *   `double` otherwise.
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -62,19 +86,21 @@ public:
   using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
   template <class VertexMap>
-  Carried_data& vertex_map(VertexMap map)
+  Carried_data& vertex_map(VertexMap map, Interpolation interpolation = Interpolation::smooth)
   {
-    m_vertex_channels.push_back([map](const Vertex_stencils& stencils) -> Vertex_writer {
+    const auto make_writer = [map](const Vertex_stencils& stencils) -> Vertex_writer {
       using Value = typename boost::property_traits<VertexMap>::value_type;
+      const auto value_of = [&map](vertex_descriptor v) -> Value { return get(map, v); };
       auto values = std::make_shared<std::vector<Value>>();
       values->reserve(stencils.size());
       for(const auto& stencil : stencils)
-        values->push_back(combine<Value>(map, stencil));
+        values->push_back(internal::combine_values<Value>(value_of, stencil.terms()));
       return [map, values](const std::vector<vertex_descriptor>& new_vertices) {
         for(std::size_t j = 0; j < new_vertices.size(); ++j)
           put(map, new_vertices[j], (*values)[j]);
       };
-    });
+    };
+    m_vertex_channels.push_back(Vertex_channel{interpolation, make_writer});
     return *this;
   }
 
@@ -117,13 +143,16 @@ public:
     void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
     {
       m_stencils.read(host, mask, loop);
+      if(m_data->interpolates(Interpolation::linear))
+        m_linear_stencils.read(host, linear_mask(mask), loop);
       if(m_data->m_origins != nullptr) {
         m_data->m_origins->clear();
         for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
           m_data->m_origins->push_back(host.origin(j));
       }
       for(const auto& channel : m_data->m_vertex_channels)
-        m_vertex_writers.push_back(channel(m_stencils.rows));
+        m_vertex_writers.push_back(channel.make_writer(
+          channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
     }
@@ -147,31 +176,51 @@ public:
     const Carried_data* m_data;
     const Mesh* m_mesh;
     internal::Stencil_recorder<Mesh, FT> m_stencils;
+    internal::Stencil_recorder<Mesh, FT> m_linear_stencils;
     std::vector<Vertex_writer> m_vertex_writers;
     std::vector<Face_writer> m_face_writers;
   };
 
+  /// throws `Bad_input` if `mask` cannot carry these maps (see `Interpolation::linear`)
+  template <class Mask>
+  void check(const Mask& mask) const
+  {
+    if(interpolates(Interpolation::linear))
+      (void)linear_mask(mask);
+  }
+
 private:
-  template <class Value, class VertexMap>
-  static Value combine(const VertexMap& map, const Stencil<vertex_descriptor, FT>& stencil)
+  // the linear scheme of the mask's split: see `Interpolation::linear`
+  template <class Mask>
+  static auto linear_mask(const Mask& mask)
   {
-    using Weight = std::conditional_t<std::is_same<Value, FT>::value, FT, double>;
-    Value sum = get(map, stencil.terms().front().first) * Weight(weight_as<Weight>(stencil.terms().front().second));
-    for(std::size_t k = 1; k < stencil.terms().size(); ++k)
-      sum = sum + get(map, stencil.terms()[k].first) * Weight(weight_as<Weight>(stencil.terms()[k].second));
-    return sum;
+    if constexpr(Mask::split == Split::quad)
+      return Linear_quad_mask<Mesh, FT>();
+    else if constexpr(Mask::split == Split::triangle_quadrisection)
+      return Linear_triangle_mask<Mesh, FT>();
+    else {
+      internal::refuse(internal::Message()
+                       << "Carried_data: a vertex map with Interpolation::linear needs a scheme that splits "
+                          "edges (Catmull-Clark, Loop, the butterflies, linear); "
+                       << mask.name() << " has no linear scheme: carry the map with Interpolation::smooth");
+      return mask;
+    }
   }
 
-  template <class Weight>
-  static Weight weight_as(const FT& w)
+  struct Vertex_channel
   {
-    if constexpr(std::is_same<Weight, FT>::value)
-      return w;
-    else
-      return CGAL::to_double(w);
+    Interpolation interpolation;
+    /// reads the old values, combines them by the stencils of the new vertices
+    std::function<Vertex_writer(const Vertex_stencils&)> make_writer;
+  };
+
+  bool interpolates(Interpolation interpolation) const
+  {
+    return std::any_of(m_vertex_channels.begin(), m_vertex_channels.end(),
+                       [&](const Vertex_channel& c) { return c.interpolation == interpolation; });
   }
 
-  std::vector<std::function<Vertex_writer(const Vertex_stencils&)>> m_vertex_channels;
+  std::vector<Vertex_channel> m_vertex_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
 };

@@ -141,6 +141,9 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
     data = get_parameter(np, internal::carried_data_t());
   const bool carried = data != nullptr && !data->empty();
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
+    if(carried)
+      data->check(mask);
   // set aside before the refinement, put back after it (kept: unrefined)
   internal::Isolated_points<VPM> set_aside;
   if constexpr(may_set_aside)

@@ -1,0 +1,166 @@
+// Carried data (Carried_data): vertex maps interpolated smoothly (the
+// scheme's rules) or linearly (the linear scheme of the same split), and the
+// value types users carry: points (UVs as Point_2), vectors, CGAL's colours.
+#include <CGAL/Exact_rational.h>
+#include <CGAL/IO/Color.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include "mesh_builders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace S = CGAL::Subdiv;
+using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using Exact_mesh = CGAL::Surface_mesh<KE::Point_3>;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+namespace {
+
+KE::Point_2 uv_of(const KE::Point_3& p)
+{
+  return KE::Point_2(p.x() + p.z() / 3, p.y() - 2 * p.z());
+}
+
+/*
+ * `mesh` refined 2 levels by `refine` with three carried maps of its points:
+ * the point itself smooth and linear, and a UV (a Point_2, an affine function
+ * of the point) linear. `smooth_twin` and `linear_twin` are the same mesh
+ * refined by the scheme and by the linear scheme of its split: the smooth map
+ * must equal the scheme's points, the linear maps the linear scheme's, exactly.
+ */
+template <class Refine, class Refine_linearly>
+void expect_smooth_and_linear_maps(Exact_mesh mesh, const Refine& refine, const Refine_linearly& refine_linearly)
+{
+  Exact_mesh smooth_twin = mesh;
+  Exact_mesh linear_twin = mesh;
+  auto smooth = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_3>("v:smooth").first;
+  auto linear = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_3>("v:linear").first;
+  auto uv = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_2>("v:uv").first;
+  for(auto v : vertices(mesh)) {
+    smooth[v] = linear[v] = mesh.point(v);
+    uv[v] = uv_of(mesh.point(v));
+  }
+  S::Carried_data<Exact_mesh> data;
+  data.vertex_map(smooth).vertex_map(linear, S::Interpolation::linear).vertex_map(uv, S::Interpolation::linear);
+  refine(mesh, S::parameters::number_of_iterations(2).carried_data(data));
+  refine(smooth_twin, S::parameters::number_of_iterations(2));
+  refine_linearly(linear_twin, S::parameters::number_of_iterations(2));
+
+  ASSERT_EQ(num_vertices(mesh), num_vertices(linear_twin));
+  std::size_t moved = 0; // vertices where the smooth and the linear values differ
+  for(auto v : vertices(mesh)) {
+    EXPECT_EQ(mesh.point(v), smooth_twin.point(v)) << v;
+    EXPECT_EQ(smooth[v], mesh.point(v)) << v;
+    EXPECT_EQ(linear[v], linear_twin.point(v)) << v;
+    EXPECT_EQ(uv[v], uv_of(linear_twin.point(v))) << v;
+    moved += smooth[v] != linear[v] ? 1 : 0;
+  }
+  EXPECT_GT(moved, num_vertices(mesh) / 2); // the two interpolations are not the same
+}
+
+} // namespace
+
+TEST(CarriedData, catmull_clark_carries_linear_maps_with_the_bilinear_weights_exactly)
+{
+  expect_smooth_and_linear_maps(
+    testing_utils::mixed_box<Exact_mesh>(), [](Exact_mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); },
+    [](Exact_mesh& m, const auto& np) { S::linear_quad_subdivision(m, np); });
+}
+
+TEST(CarriedData, loop_carries_linear_maps_with_the_linear_triangle_weights_exactly)
+{
+  expect_smooth_and_linear_maps(
+    testing_utils::open_fan<Exact_mesh>(5), [](Exact_mesh& m, const auto& np) { S::loop_subdivision(m, np); },
+    [](Exact_mesh& m, const auto& np) { S::linear_triangle_subdivision(m, np); });
+}
+
+TEST(CarriedData, schemes_without_a_linear_scheme_refuse_linear_maps_and_change_nothing)
+{
+  for(const std::string scheme : {"doo-sabin", "sqrt3"}) {
+    Mesh mesh = testing_utils::bipyramid<Mesh>(5);
+    const Mesh before = mesh;
+    auto value = mesh.add_property_map<Mesh::Vertex_index, double>("v:value").first;
+    for(auto v : vertices(mesh))
+      value[v] = static_cast<double>(v.idx());
+    S::Carried_data<Mesh> data;
+    data.vertex_map(value, S::Interpolation::linear);
+    const auto np = S::parameters::number_of_iterations(2).carried_data(data);
+    try {
+      if(scheme == "doo-sabin")
+        S::doo_sabin_subdivision(mesh, np);
+      else
+        S::sqrt3_subdivision(mesh, np);
+      ADD_FAILURE() << scheme << " accepted a linear map";
+    } catch(const S::Bad_input& e) {
+      EXPECT_NE(std::string(e.what()).find("Interpolation::linear"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("Interpolation::smooth"), std::string::npos) << e.what();
+    }
+    ASSERT_EQ(num_vertices(mesh), num_vertices(before)) << scheme;
+    for(auto v : vertices(mesh)) {
+      EXPECT_EQ(mesh.point(v), before.point(v)) << scheme;
+      EXPECT_EQ(value[v], static_cast<double>(v.idx())) << scheme;
+    }
+    // the same map carried smoothly is accepted
+    S::Carried_data<Mesh> smooth_data;
+    smooth_data.vertex_map(value);
+    if(scheme == "doo-sabin")
+      S::doo_sabin_subdivision(mesh, S::parameters::carried_data(smooth_data));
+    else
+      S::sqrt3_subdivision(mesh, S::parameters::carried_data(smooth_data));
+    EXPECT_GT(num_vertices(mesh), num_vertices(before)) << scheme;
+  }
+}
+
+/*
+ * Colours: each channel combined in double with the mask's weights, then
+ * rounded and clamped, at every level (one level here: the next would start
+ * from the rounded colours). The butterfly's negative weights overshoot, so the
+ * same channel carried as a double map goes beyond [0, 255] somewhere: the
+ * colour must be that double, rounded and clamped, at every vertex.
+ */
+TEST(CarriedData, colours_are_combined_in_double_then_rounded_and_clamped)
+{
+  Mesh mesh = testing_utils::bipyramid<Mesh>(6);
+  auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:colour").first;
+  std::array<Mesh::Property_map<Mesh::Vertex_index, double>, 4> channel;
+  for(int c = 0; c < 4; ++c)
+    channel[c] = mesh.add_property_map<Mesh::Vertex_index, double>("v:channel" + std::to_string(c)).first;
+  for(auto v : vertices(mesh)) {
+    const int i = static_cast<int>(v.idx());
+    // red: the top apex (vertex 0) and vertices 6 and 7 full, the rest empty;
+    // green: the other way round; blue: odd values (ties at 1/2)
+    const bool full = i >= 6 || i == 0;
+    const std::array<unsigned char, 4> value = {static_cast<unsigned char>(full ? 255 : 0),
+                                                static_cast<unsigned char>(full ? 0 : 255),
+                                                static_cast<unsigned char>(2 * i + 1), 128};
+    colour[v] = CGAL::IO::Color(value[0], value[1], value[2], value[3]);
+    for(int c = 0; c < 4; ++c)
+      channel[c][v] = value[c];
+  }
+  S::Carried_data<Mesh> data;
+  data.vertex_map(colour);
+  for(const auto& map : channel)
+    data.vertex_map(map);
+  S::butterfly_subdivision(mesh, S::parameters::carried_data(data));
+
+  bool above = false, below = false, halfway = false;
+  for(auto v : vertices(mesh)) {
+    const std::array<unsigned char, 4> got = {colour[v].red(), colour[v].green(), colour[v].blue(), colour[v].alpha()};
+    for(int c = 0; c < 4; ++c) {
+      const double exact = channel[c][v];
+      above = above || exact > 255.5;
+      below = below || exact < -0.5;
+      halfway = halfway || exact - std::floor(exact) == 0.5;
+      EXPECT_EQ(int(got[c]), int(std::clamp(std::round(exact), 0.0, 255.0))) << v << " channel " << c;
+    }
+    EXPECT_EQ(int(got[3]), 128) << v; // the weights sum to 1
+  }
+  EXPECT_TRUE(above && below && halfway) << "the test does not reach clamping or a rounding tie";
+}
