@@ -13,7 +13,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace S = CGAL::Subdiv;
 using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
@@ -163,4 +166,134 @@ TEST(CarriedData, colours_are_combined_in_double_then_rounded_and_clamped)
     EXPECT_EQ(int(got[3]), 128) << v; // the weights sum to 1
   }
   EXPECT_TRUE(above && below && halfway) << "the test does not reach clamping or a rounding tie";
+}
+
+namespace {
+
+KE::Point_3 mix(const std::vector<std::pair<KE::Point_3, CGAL::Exact_rational>>& terms)
+{
+  KE::Vector_3 sum = CGAL::NULL_VECTOR;
+  for(const auto& [p, w] : terms)
+    sum = sum + w * (p - CGAL::ORIGIN);
+  return CGAL::ORIGIN + sum;
+}
+
+/// the corners of base face `f` of `base` (corner i: the target of the i-th halfedge from halfedge(f))
+std::vector<KE::Point_3> corners_of(const Exact_mesh& base, std::size_t f)
+{
+  std::vector<KE::Point_3> result;
+  const auto face = *std::next(faces(base).begin(), static_cast<std::ptrdiff_t>(f));
+  for(auto h : CGAL::halfedges_around_face(halfedge(face, base), base))
+    result.push_back(base.point(target(h, base)));
+  return result;
+}
+
+/// the point of parameter uv in the domain of `origin` (see Face_origin), on the linear surface of `base`
+KE::Point_3 linear_point(const Exact_mesh& base, const S::Face_origin& origin, const std::array<double, 2>& uv)
+{
+  const CGAL::Exact_rational u(uv[0]), v(uv[1]), one(1);
+  std::vector<KE::Point_3> c = corners_of(base, origin.face);
+  const std::size_t n = c.size();
+  if(origin.sub_quad >= 0) { // the sub-quad at corner k: k, the midpoints beside it, the centroid
+    const std::size_t k = static_cast<std::size_t>(origin.sub_quad);
+    std::vector<std::pair<KE::Point_3, CGAL::Exact_rational>> centroid;
+    for(const auto& p : c)
+      centroid.push_back({p, one / int(n)});
+    c = {c[k], CGAL::midpoint(c[k], c[(k + 1) % n]), mix(centroid), CGAL::midpoint(c[(k + n - 1) % n], c[k])};
+  }
+  if(c.size() == 3)
+    return mix({{c[0], one - u - v}, {c[1], u}, {c[2], v}});
+  return mix({{c[0], (one - u) * (one - v)}, {c[1], u * (one - v)}, {c[2], u * v}, {c[3], (one - u) * v}});
+}
+
+/*
+ * Provenance after 2 levels of `refine` (a scheme that splits edges): the
+ * same mesh refined by the linear scheme of the split (`refine_linearly`,
+ * the same numbering) has every corner of every face at the point of its
+ * parameter on the base face, exactly; every vertex's base origin is a base
+ * vertex at its point, a base edge through it, or a base face.
+ */
+template <class Refine, class Refine_linearly>
+void expect_provenance(const Exact_mesh& base, const Refine& refine, const Refine_linearly& refine_linearly)
+{
+  Exact_mesh mesh = base;
+  Exact_mesh linear_twin = base;
+  auto face_origin = mesh.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  auto base_origin = mesh.add_property_map<Exact_mesh::Vertex_index, S::Vertex_origin>("v:origin").first;
+  S::Carried_data<Exact_mesh> data;
+  data.face_origin_map(face_origin).base_origin_map(base_origin);
+  refine(mesh, S::parameters::number_of_iterations(2).carried_data(data));
+  refine_linearly(linear_twin, S::parameters::number_of_iterations(2));
+  ASSERT_EQ(num_faces(mesh), num_faces(linear_twin));
+
+  std::vector<std::size_t> children(num_faces(base), 0);
+  for(auto f : faces(mesh)) {
+    const S::Face_origin& origin = face_origin[f];
+    ASSERT_LT(origin.face, num_faces(base));
+    ++children[origin.face];
+    ASSERT_EQ(origin.corners, static_cast<int>(degree(f, mesh)));
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      EXPECT_EQ(linear_twin.point(target(h, mesh)), linear_point(base, origin, origin.uv[i++])) << f << " corner " << i;
+    EXPECT_GT(origin.box().xmax(), origin.box().xmin());
+  }
+  for(auto f : faces(base)) { // 2 levels: 16 children, in 4 sub-quads for the other sizes under the quad split
+    const std::size_t n = degree(f, base);
+    EXPECT_EQ(children[f.idx()], n == 3 && num_faces(mesh) == 16 * num_faces(base) ? 16 : 4 * n) << f;
+  }
+
+  std::map<S::Origin_kind, std::size_t> kinds;
+  for(auto v : vertices(mesh)) {
+    const S::Vertex_origin o = base_origin[v];
+    ++kinds[o.kind];
+    const KE::Point_3& p = linear_twin.point(v);
+    if(o.kind == S::Origin_kind::vertex) {
+      EXPECT_EQ(p, base.point(Exact_mesh::Vertex_index(static_cast<Exact_mesh::size_type>(o.index)))) << v;
+    } else if(o.kind == S::Origin_kind::edge) {
+      const auto e = Exact_mesh::Edge_index(static_cast<Exact_mesh::size_type>(o.index));
+      const KE::Segment_3 segment(base.point(source(e, base)), base.point(target(e, base)));
+      EXPECT_TRUE(segment.has_on(p) && p != segment.source() && p != segment.target()) << v;
+    }
+  }
+  // each base edge has 3 new vertices inside it after 2 levels
+  EXPECT_EQ(kinds[S::Origin_kind::vertex], num_vertices(base));
+  EXPECT_EQ(kinds[S::Origin_kind::edge], 3 * num_edges(base));
+  EXPECT_EQ(kinds[S::Origin_kind::face], num_vertices(mesh) - num_vertices(base) - 3 * num_edges(base));
+}
+
+} // namespace
+
+TEST(CarriedData, catmull_clark_face_and_vertex_provenance_are_exact)
+{
+  expect_provenance(
+    testing_utils::mixed_box<Exact_mesh>(), [](Exact_mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); },
+    [](Exact_mesh& m, const auto& np) { S::linear_quad_subdivision(m, np); });
+}
+
+TEST(CarriedData, loop_face_and_vertex_provenance_are_exact)
+{
+  expect_provenance(
+    testing_utils::open_fan<Exact_mesh>(5), [](Exact_mesh& m, const auto& np) { S::loop_subdivision(m, np); },
+    [](Exact_mesh& m, const auto& np) { S::linear_triangle_subdivision(m, np); });
+}
+
+TEST(CarriedData, dual_and_sqrt3_schemes_refuse_provenance_and_change_nothing)
+{
+  for(const std::string scheme : {"doo-sabin", "sqrt3"}) {
+    Mesh mesh = testing_utils::bipyramid<Mesh>(5);
+    auto origin = mesh.add_property_map<Mesh::Face_index, S::Face_origin>("f:origin").first;
+    S::Carried_data<Mesh> data;
+    data.face_origin_map(origin);
+    const auto np = S::parameters::carried_data(data);
+    try {
+      if(scheme == "doo-sabin")
+        S::doo_sabin_subdivision(mesh, np);
+      else
+        S::sqrt3_subdivision(mesh, np);
+      ADD_FAILURE() << scheme << " accepted a face origin map";
+    } catch(const S::Bad_input& e) {
+      EXPECT_NE(std::string(e.what()).find("face_origin_map"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(num_faces(mesh), 10u) << scheme;
+  }
 }

@@ -11,10 +11,12 @@
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/parameters.h>
 #include <CGAL/Subdiv/refinement/Inherited_face_map.h>
+#include <CGAL/Subdiv/refinement/Provenance.h>
 #include <CGAL/Subdiv/refinement/carried_values.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 
+#include <boost/container_hash/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
@@ -23,6 +25,7 @@
 #include <functional>
 #include <memory>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -66,6 +69,17 @@ enum class Interpolation {
  * - `origins(vector)`: fills `vector` with the origin of every vertex of the
  *   last level (the old vertex, edge, face or corner it came from, by ordinal
  *   in the iteration order of the mesh before that level; see `Vertex_origin`).
+ * - `face_origin_map(map)`: a face property map of `Face_origin`: for every
+ *   face of the refined mesh, the face of the base mesh (the mesh given to
+ *   `subdivide()`) it lies in, and the parameters of its corners in that
+ *   face's domain.
+ * - `base_origin_map(map)`: a vertex property map of `Vertex_origin`: for
+ *   every vertex of the refined mesh, the element of the base mesh it lies on
+ *   (a vertex, inside an edge, inside a face), by ordinal in the base mesh's
+ *   iteration order.
+ * The last two are for the schemes that split edges (Catmull-Clark, Loop, the
+ *   butterflies, linear); Doo-Sabin and the sqrt3 schemes make faces across the
+ *   old edges, and refuse them (doc/provenance.md).
  *
  * Pass it with the named parameter `carried_data`:
  * `CGAL::Subdiv::parameters::number_of_iterations(2).carried_data(data)`.
@@ -123,7 +137,24 @@ public:
     return *this;
   }
 
-  bool empty() const { return m_vertex_channels.empty() && m_face_channels.empty() && m_origins == nullptr; }
+  template <class FaceMap>
+  Carried_data& face_origin_map(FaceMap map)
+  {
+    m_provenance.put_face = [map](face_descriptor f, const Face_origin& origin) { put(map, f, origin); };
+    return *this;
+  }
+
+  template <class VertexMap>
+  Carried_data& base_origin_map(VertexMap map)
+  {
+    m_provenance.put_vertex = [map](vertex_descriptor v, const Vertex_origin& origin) { put(map, v, origin); };
+    return *this;
+  }
+
+  bool empty() const
+  {
+    return m_vertex_channels.empty() && m_face_channels.empty() && m_origins == nullptr && !wants_provenance();
+  }
 
   /*
    * The sink of `internal::refine_level` that carries the data through one
@@ -145,11 +176,15 @@ public:
       m_stencils.read(host, mask, loop);
       if(m_data->interpolates(Interpolation::linear))
         m_linear_stencils.read(host, linear_mask(mask), loop);
-      if(m_data->m_origins != nullptr) {
-        m_data->m_origins->clear();
+      if(m_data->m_origins != nullptr || m_data->wants_provenance()) {
+        m_new_origins.clear();
         for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
-          m_data->m_origins->push_back(host.origin(j));
+          m_new_origins.push_back(host.origin(j));
+        if(m_data->m_origins != nullptr)
+          *m_data->m_origins = m_new_origins;
       }
+      if(m_data->wants_provenance())
+        read_provenance(mask);
       for(const auto& channel : m_data->m_vertex_channels)
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
@@ -160,6 +195,8 @@ public:
     template <class New_level>
     void write(const New_level& level)
     {
+      if(m_data->wants_provenance())
+        write_provenance(level);
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -173,20 +210,52 @@ public:
     }
 
   private:
+    template <class Mask>
+    void read_provenance(const Mask&)
+    {
+      Provenance& provenance = m_data->m_provenance;
+      const auto origin_of = [&](face_descriptor f) { return provenance.faces.at(f); };
+      m_provenance.read(*m_mesh, provenance.base_pending, Mask::split == Split::quad, origin_of, provenance.base);
+    }
+
+    template <class New_level>
+    void write_provenance(const New_level& level)
+    {
+      Provenance& provenance = m_data->m_provenance;
+      provenance.faces.clear();
+      const auto put_face = [&](face_descriptor f, const Face_origin& origin) {
+        provenance.faces[f] = origin;
+        if(provenance.put_face)
+          provenance.put_face(f, origin);
+      };
+      m_provenance.write(*m_mesh, level, m_new_origins, put_face, provenance.put_vertex);
+      provenance.base_pending = false;
+    }
+
     const Carried_data* m_data;
     const Mesh* m_mesh;
     internal::Stencil_recorder<Mesh, FT> m_stencils;
     internal::Stencil_recorder<Mesh, FT> m_linear_stencils;
+    std::vector<Vertex_origin> m_new_origins;
+    internal::Provenance_level<Mesh> m_provenance;
     std::vector<Vertex_writer> m_vertex_writers;
     std::vector<Face_writer> m_face_writers;
   };
 
-  /// throws `Bad_input` if `mask` cannot carry these maps (see `Interpolation::linear`)
+  /// called by `subdivide()` before the first level: throws `Bad_input` if
+  /// `mask` cannot carry these maps (see `Interpolation::linear`, `Face_origin`),
+  /// and makes the mesh of the call the base of the provenance maps
   template <class Mask>
-  void check(const Mask& mask) const
+  void prepare(const Mask& mask) const
   {
     if(interpolates(Interpolation::linear))
       (void)linear_mask(mask);
+    if(wants_provenance() && Mask::split != Split::quad && Mask::split != Split::triangle_quadrisection)
+      internal::refuse(internal::Message()
+                       << "Carried_data: face_origin_map and base_origin_map need a scheme that splits edges "
+                          "(Catmull-Clark, Loop, the butterflies, linear); "
+                       << mask.name() << " makes faces across the old edges");
+    m_provenance.base_pending = true;
   }
 
 private:
@@ -207,6 +276,18 @@ private:
     }
   }
 
+  // the state of the provenance maps from level to level
+  struct Provenance
+  {
+    std::function<void(face_descriptor, const Face_origin&)> put_face;
+    std::function<void(vertex_descriptor, const Vertex_origin&)> put_vertex;
+    bool base_pending = true;
+    internal::Base_faces base;
+    std::unordered_map<face_descriptor, Face_origin, boost::hash<face_descriptor>> faces;
+  };
+
+  bool wants_provenance() const { return bool(m_provenance.put_face) || bool(m_provenance.put_vertex); }
+
   struct Vertex_channel
   {
     Interpolation interpolation;
@@ -223,6 +304,7 @@ private:
   std::vector<Vertex_channel> m_vertex_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
+  mutable Provenance m_provenance;
 };
 
 } // namespace Subdiv

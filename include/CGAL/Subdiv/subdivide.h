@@ -143,7 +143,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   const bool carried = data != nullptr && !data->empty();
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
     if(carried)
-      data->check(mask);
+      data->prepare(mask);
   // set aside before the refinement, put back after it (kept: unrefined)
   internal::Isolated_points<VPM> set_aside;
   if constexpr(may_set_aside)
