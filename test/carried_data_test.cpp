@@ -297,3 +297,120 @@ TEST(CarriedData, dual_and_sqrt3_schemes_refuse_provenance_and_change_nothing)
     EXPECT_EQ(num_faces(mesh), 10u) << scheme;
   }
 }
+
+namespace {
+
+/// the value of parameter uv in the domain of `origin` from the corner values `at` of base face origin.face
+KE::Point_2 linear_value(const std::vector<KE::Point_2>& at, const S::Face_origin& origin,
+                         const std::array<double, 2>& uv)
+{
+  const CGAL::Exact_rational u(uv[0]), v(uv[1]), one(1);
+  std::vector<KE::Point_2> c = at;
+  const std::size_t n = c.size();
+  const auto mix = [](const std::vector<std::pair<KE::Point_2, CGAL::Exact_rational>>& terms) {
+    KE::Vector_2 sum = CGAL::NULL_VECTOR;
+    for(const auto& [p, w] : terms)
+      sum = sum + w * (p - CGAL::ORIGIN);
+    return CGAL::ORIGIN + sum;
+  };
+  if(origin.sub_quad >= 0) {
+    const std::size_t k = static_cast<std::size_t>(origin.sub_quad);
+    std::vector<std::pair<KE::Point_2, CGAL::Exact_rational>> centroid;
+    for(const auto& p : c)
+      centroid.push_back({p, one / int(n)});
+    c = {c[k], CGAL::midpoint(c[k], c[(k + 1) % n]), mix(centroid), CGAL::midpoint(c[(k + n - 1) % n], c[k])};
+  }
+  if(c.size() == 3)
+    return mix({{c[0], one - u - v}, {c[1], u}, {c[2], v}});
+  return mix({{c[0], (one - u) * (one - v)}, {c[1], u * (one - v)}, {c[2], u * v}, {c[3], (one - u) * v}});
+}
+
+/*
+ * UVs with a seam at every edge (every face has its own values at its
+ * corners), carried with Face_varying_interpolation::all through 2 levels of
+ * `refine`: every new corner holds the linear interpolation, inside its base
+ * face, of that face's corner values, at the corner's parameter
+ * (face_origin_map), exactly. A second corner map without seams (the value of
+ * the corner's vertex) equals, at every corner, the vertex map carried with
+ * Interpolation::linear.
+ */
+template <class Refine>
+void expect_linear_corner_values(Exact_mesh mesh, const Refine& refine)
+{
+  using H = Exact_mesh::Halfedge_index;
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto smooth_uv = mesh.add_property_map<H, KE::Point_2>("h:seamless").first;
+  auto vertex_uv = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_2>("v:uv").first;
+  auto origin = mesh.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  std::vector<std::vector<KE::Point_2>> base_values; // by base face, corner
+  for(auto f : faces(mesh)) {
+    base_values.emplace_back();
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      uv[h] = KE::Point_2(CGAL::Exact_rational(int(f.idx()) * 7 + i) / 3, i * i - int(f.idx()));
+      base_values.back().push_back(uv[h]);
+      ++i;
+    }
+  }
+  for(auto v : vertices(mesh))
+    vertex_uv[v] = uv_of(mesh.point(v));
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh))
+      smooth_uv[h] = vertex_uv[target(h, mesh)];
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::all)
+    .corner_map(smooth_uv, S::Face_varying_interpolation::all)
+    .vertex_map(vertex_uv, S::Interpolation::linear)
+    .face_origin_map(origin);
+  refine(mesh, S::parameters::number_of_iterations(2).carried_data(data));
+
+  std::size_t seams = 0; // corners whose value differs from another corner at the same vertex
+  for(auto f : faces(mesh)) {
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      EXPECT_EQ(uv[h], linear_value(base_values[origin[f].face], origin[f], origin[f].uv[i++])) << h;
+      EXPECT_EQ(smooth_uv[h], vertex_uv[target(h, mesh)]) << h;
+      const H other = opposite(next(h, mesh), mesh); // the corner of the next face around target(h)
+      seams += !is_border(other, mesh) && uv[other] != uv[h] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(seams, 0u);
+}
+
+} // namespace
+
+TEST(CarriedData, catmull_clark_carries_corner_maps_linearly_with_their_seams)
+{
+  expect_linear_corner_values(testing_utils::mixed_box<Exact_mesh>(),
+                              [](Exact_mesh& m, const auto& np) { S::catmull_clark_subdivision(m, np); });
+}
+
+TEST(CarriedData, loop_carries_corner_maps_linearly_with_their_seams)
+{
+  expect_linear_corner_values(testing_utils::open_fan<Exact_mesh>(5),
+                              [](Exact_mesh& m, const auto& np) { S::loop_subdivision(m, np); });
+}
+
+TEST(CarriedData, smooth_face_varying_modes_and_dual_schemes_are_refused)
+{
+  using H = Mesh::Halfedge_index;
+  for(const auto mode : {S::Face_varying_interpolation::none, S::Face_varying_interpolation::corners_plus1}) {
+    Mesh mesh = testing_utils::cube<Mesh>();
+    auto uv = mesh.add_property_map<H, K::Point_2>("h:uv", K::Point_2(1, 2)).first;
+    S::Carried_data<Mesh> data;
+    data.corner_map(uv, mode);
+    EXPECT_THROW(S::catmull_clark_subdivision(mesh, S::parameters::carried_data(data)), S::Bad_input);
+    EXPECT_EQ(num_faces(mesh), 6u);
+  }
+  Mesh mesh = testing_utils::cube<Mesh>();
+  auto uv = mesh.add_property_map<H, K::Point_2>("h:uv", K::Point_2(1, 2)).first;
+  S::Carried_data<Mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::all);
+  try {
+    S::doo_sabin_subdivision(mesh, S::parameters::carried_data(data));
+    ADD_FAILURE() << "Doo-Sabin accepted a corner map";
+  } catch(const S::Bad_input& e) {
+    EXPECT_NE(std::string(e.what()).find("corner map"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(num_faces(mesh), 6u);
+}

@@ -15,17 +15,20 @@
 #include <CGAL/Subdiv/refinement/carried_values.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <boost/container_hash/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -49,6 +52,22 @@ enum class Interpolation {
 
 /*!
  * \ingroup PkgSubdivFunctions
+ * How `Carried_data` interpolates a corner map (face-varying data, such as
+ * UVs with seams): OpenSubdiv's `Sdc::Options::FVarLinearInterpolation`,
+ * value for value. Only `all` is implemented so far; the others are refused
+ * with `Bad_input` (doc/provenance.md, "Face-varying data").
+ */
+enum class Face_varying_interpolation {
+  none,          ///< smooth everywhere, seams refined as borders (`FVAR_LINEAR_NONE`)
+  corners_only,  ///< as `none`, with sharp corners (`FVAR_LINEAR_CORNERS_ONLY`)
+  corners_plus1, ///< OpenSubdiv's and USD's usual choice (`FVAR_LINEAR_CORNERS_PLUS1`)
+  corners_plus2, ///< `FVAR_LINEAR_CORNERS_PLUS2`
+  boundaries,    ///< linear along seams and borders (`FVAR_LINEAR_BOUNDARIES`)
+  all            ///< linear in every face (`FVAR_LINEAR_ALL`): the linear scheme of the split, face by face
+};
+
+/*!
+ * \ingroup PkgSubdivFunctions
  * Per-element data that `subdivide()` carries to the refined mesh besides the
  * points.
  *
@@ -63,6 +82,13 @@ enum class Interpolation {
  *   the mask's `FT` when the values are made of it (the `FT` itself, or a
  *   kernel object of a kernel with that `FT`: exact values stay exact), a
  *   `double` otherwise.
+ * - `corner_map(map, Face_varying_interpolation::all)`: a halfedge property
+ *   map of per-corner values (the value of face(h) at target(h)), such as UVs
+ *   with seams: two corners at one vertex with different values are a seam.
+ *   With `all`, every corner of a new face gets the combination of the corner
+ *   values of its parent face that the linear scheme of the split gives its
+ *   vertex (for the schemes that split edges); a seam stays a seam. Border
+ *   halfedges are left alone.
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -96,6 +122,26 @@ public:
   using Vertex_stencils = std::vector<Stencil<vertex_descriptor, FT>>;
   /// after the rebuild: writes the values of the new vertices
   using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
+  /// a new face of a level: its parent (old face ordinal) and its vertices (new indices), as the host made them
+  struct New_face
+  {
+    face_descriptor face;
+    std::size_t parent = 0;
+    int size = 0;
+    std::array<std::size_t, 4> vertices{};
+
+    /// the position among `vertices` of the new vertex `v`
+    int corner_at(vertex_descriptor v, const std::vector<vertex_descriptor>& new_vertices) const
+    {
+      int i = 0;
+      while(i + 1 < size && new_vertices[vertices[i]] != v)
+        ++i;
+      return i;
+    }
+  };
+  /// after the rebuild: writes the values of the corners of the new faces
+  using Corner_writer =
+    std::function<void(const Mesh&, const std::vector<New_face>&, const std::vector<vertex_descriptor>&)>;
   /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
   using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
@@ -115,6 +161,37 @@ public:
       };
     };
     m_vertex_channels.push_back(Vertex_channel{interpolation, make_writer});
+    return *this;
+  }
+
+  template <class CornerMap>
+  Carried_data& corner_map(CornerMap map, Face_varying_interpolation interpolation)
+  {
+    const auto make_writer = [map](const Mesh& mesh, const Vertex_stencils& linear_rows) -> Corner_writer {
+      using Value = typename boost::property_traits<CornerMap>::value_type;
+      // the old corners of every old face, in face order
+      auto old = std::make_shared<std::vector<std::vector<std::pair<vertex_descriptor, Value>>>>();
+      for(face_descriptor f : faces(mesh)) {
+        old->emplace_back();
+        for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+          old->back().emplace_back(target(h, mesh), get(map, h));
+      }
+      return [map, old, &linear_rows](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
+                                      const std::vector<vertex_descriptor>& new_vertices) {
+        for(const New_face& face : new_faces) {
+          const auto& parent = (*old)[face.parent];
+          const auto value_of = [&parent](vertex_descriptor u) -> const Value& {
+            return std::find_if(parent.begin(), parent.end(), [u](const auto& c) { return c.first == u; })->second;
+          };
+          std::array<Value, 4> values;
+          for(int i = 0; i < face.size; ++i)
+            values[i] = internal::combine_values<Value>(value_of, linear_rows[face.vertices[i]].terms());
+          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh))
+            put(map, h, values[face.corner_at(target(h, new_mesh), new_vertices)]);
+        }
+      };
+    };
+    m_corner_channels.push_back(Corner_channel{interpolation, make_writer});
     return *this;
   }
 
@@ -153,7 +230,8 @@ public:
 
   bool empty() const
   {
-    return m_vertex_channels.empty() && m_face_channels.empty() && m_origins == nullptr && !wants_provenance();
+    return m_vertex_channels.empty() && m_corner_channels.empty() && m_face_channels.empty() && m_origins == nullptr &&
+           !wants_provenance();
   }
 
   /*
@@ -174,7 +252,7 @@ public:
     void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
     {
       m_stencils.read(host, mask, loop);
-      if(m_data->interpolates(Interpolation::linear))
+      if(m_data->interpolates(Interpolation::linear) || !m_data->m_corner_channels.empty())
         m_linear_stencils.read(host, linear_mask(mask), loop);
       if(m_data->m_origins != nullptr || m_data->wants_provenance()) {
         m_new_origins.clear();
@@ -188,6 +266,8 @@ public:
       for(const auto& channel : m_data->m_vertex_channels)
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
+      for(const auto& channel : m_data->m_corner_channels)
+        m_corner_writers.push_back(channel.make_writer(*m_mesh, m_linear_stencils.rows));
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
     }
@@ -197,6 +277,8 @@ public:
     {
       if(m_data->wants_provenance())
         write_provenance(level);
+      if(!m_corner_writers.empty())
+        write_corners(level);
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -210,6 +292,25 @@ public:
     }
 
   private:
+    template <class New_level>
+    void write_corners(const New_level& level)
+    {
+      std::vector<New_face> new_faces(level.faces().number_of_faces());
+      const auto& record = level.faces();
+      const auto& elements = level.elements();
+      for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
+        record.for_each_face_in_block(b, [&](std::size_t k, const auto* corners, std::size_t size, std::size_t parent) {
+          New_face& face = new_faces[k];
+          face.face = elements.faces[k];
+          face.parent = parent;
+          face.size = static_cast<int>(size);
+          for(std::size_t i = 0; i < size; ++i)
+            face.vertices[i] = corners[i].vertex;
+        });
+      for(const auto& write : m_corner_writers)
+        write(*m_mesh, new_faces, elements.vertices);
+    }
+
     template <class Mask>
     void read_provenance(const Mask&)
     {
@@ -239,6 +340,7 @@ public:
     std::vector<Vertex_origin> m_new_origins;
     internal::Provenance_level<Mesh> m_provenance;
     std::vector<Vertex_writer> m_vertex_writers;
+    std::vector<Corner_writer> m_corner_writers;
     std::vector<Face_writer> m_face_writers;
   };
 
@@ -248,8 +350,13 @@ public:
   template <class Mask>
   void prepare(const Mask& mask) const
   {
-    if(interpolates(Interpolation::linear))
+    if(interpolates(Interpolation::linear) || !m_corner_channels.empty())
       (void)linear_mask(mask);
+    for(const Corner_channel& channel : m_corner_channels)
+      if(channel.interpolation != Face_varying_interpolation::all)
+        internal::refuse(internal::Message() << "Carried_data: corner_map with a smooth face-varying interpolation is "
+                                                "not implemented yet; Face_varying_interpolation::all (linear in "
+                                                "every face) is");
     if(wants_provenance() && Mask::split != Split::quad && Mask::split != Split::triangle_quadrisection)
       internal::refuse(internal::Message()
                        << "Carried_data: face_origin_map and base_origin_map need a scheme that splits edges "
@@ -269,9 +376,9 @@ private:
       return Linear_triangle_mask<Mesh, FT>();
     else {
       internal::refuse(internal::Message()
-                       << "Carried_data: a vertex map with Interpolation::linear needs a scheme that splits "
-                          "edges (Catmull-Clark, Loop, the butterflies, linear); "
-                       << mask.name() << " has no linear scheme: carry the map with Interpolation::smooth");
+                       << "Carried_data: a vertex map with Interpolation::linear, or a corner map, needs a scheme "
+                          "that splits edges (Catmull-Clark, Loop, the butterflies, linear); "
+                       << mask.name() << " has no linear scheme: carry a vertex map with Interpolation::smooth");
       return mask;
     }
   }
@@ -301,7 +408,15 @@ private:
                        [&](const Vertex_channel& c) { return c.interpolation == interpolation; });
   }
 
+  struct Corner_channel
+  {
+    Face_varying_interpolation interpolation;
+    /// reads the old corner values, combines them by the linear stencils of the new vertices
+    std::function<Corner_writer(const Mesh&, const Vertex_stencils&)> make_writer;
+  };
+
   std::vector<Vertex_channel> m_vertex_channels;
+  std::vector<Corner_channel> m_corner_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
   mutable Provenance m_provenance;
