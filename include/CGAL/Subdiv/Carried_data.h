@@ -252,7 +252,8 @@ public:
     void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
     {
       m_stencils.read(host, mask, loop);
-      if(m_data->interpolates(Interpolation::linear) || !m_data->m_corner_channels.empty())
+      if(m_data->interpolates(Interpolation::linear) || !m_data->m_corner_channels.empty() ||
+         m_data->wants_provenance())
         m_linear_stencils.read(host, linear_mask(mask), loop);
       if(m_data->m_origins != nullptr || m_data->wants_provenance()) {
         m_new_origins.clear();
@@ -329,7 +330,7 @@ public:
         if(provenance.put_face)
           provenance.put_face(f, origin);
       };
-      m_provenance.write(*m_mesh, level, m_new_origins, put_face, provenance.put_vertex);
+      m_provenance.write(*m_mesh, level, m_new_origins, m_linear_stencils.rows, put_face, provenance.put_vertex);
       provenance.base_pending = false;
     }
 
@@ -350,18 +351,13 @@ public:
   template <class Mask>
   void prepare(const Mask& mask) const
   {
-    if(interpolates(Interpolation::linear) || !m_corner_channels.empty())
+    if(interpolates(Interpolation::linear) || !m_corner_channels.empty() || wants_provenance())
       (void)linear_mask(mask);
     for(const Corner_channel& channel : m_corner_channels)
       if(channel.interpolation != Face_varying_interpolation::all)
         internal::refuse(internal::Message() << "Carried_data: corner_map with a smooth face-varying interpolation is "
                                                 "not implemented yet; Face_varying_interpolation::all (linear in "
                                                 "every face) is");
-    if(wants_provenance() && Mask::split != Split::quad && Mask::split != Split::triangle_quadrisection)
-      internal::refuse(internal::Message()
-                       << "Carried_data: face_origin_map and base_origin_map need a scheme that splits edges "
-                          "(Catmull-Clark, Loop, the butterflies, linear); "
-                       << mask.name() << " makes faces across the old edges");
     m_provenance.base_pending = true;
   }
 
@@ -376,9 +372,12 @@ private:
       return Linear_triangle_mask<Mesh, FT>();
     else {
       internal::refuse(internal::Message()
-                       << "Carried_data: a vertex map with Interpolation::linear, or a corner map, needs a scheme "
-                          "that splits edges (Catmull-Clark, Loop, the butterflies, linear); "
-                       << mask.name() << " has no linear scheme: carry a vertex map with Interpolation::smooth");
+                       << "Carried_data: vertex maps with Interpolation::linear, corner maps, face_origin_map and "
+                          "base_origin_map need a scheme that splits edges (Catmull-Clark, Loop, the butterflies, "
+                          "linear); "
+                       << mask.name()
+                       << " has none (it makes faces across the old edges): carry vertex maps with "
+                          "Interpolation::smooth");
       return mask;
     }
   }

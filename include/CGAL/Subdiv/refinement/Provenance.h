@@ -12,6 +12,7 @@
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -96,7 +97,8 @@ class Provenance_level
 
   struct Old_face
   {
-    std::vector<std::size_t> vertices; // ordinals in the old mesh
+    std::vector<typename GT::vertex_descriptor> corners; // the corner vertices
+    std::vector<std::size_t> vertices;                   // ordinals in the old mesh
     std::vector<std::size_t> edges;
     std::vector<UV> uv; // empty for a base n-gon of the quad split (sub-quads)
     Face_origin origin; // its own origin (face, sub_quad)
@@ -119,6 +121,7 @@ public:
     for(auto f : faces(mesh)) {
       Old_face old;
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        old.corners.push_back(target(h, mesh));
         old.vertices.push_back(number(target(h, mesh)));
         old.edges.push_back(number(edge(next(h, mesh), mesh)));
       }
@@ -136,13 +139,14 @@ public:
 
   /*
    * After the level: put_face(f, origin) for every new face (from the
-   * record's corners and parents, and `origins` of the new vertices), and
+   * record's corners and parents, `origins` of the new vertices and their
+   * `linear_rows`, the stencils of the linear scheme of the split), and
    * put_vertex(v, origin in the base mesh) for every vertex if put_vertex
    * is not empty.
    */
-  template <class New_level, class Put_face, class Put_vertex>
+  template <class New_level, class Rows, class Put_face, class Put_vertex>
   void write(const Mesh& mesh, const New_level& level, const std::vector<Vertex_origin>& origins,
-             const Put_face& put_face, const Put_vertex& put_vertex) const
+             const Rows& linear_rows, const Put_face& put_face, const Put_vertex& put_vertex) const
   {
     const auto& elements = level.elements();
     const auto& record = level.faces();
@@ -155,7 +159,8 @@ public:
         if(old.uv.empty())
           result.sub_quad = sub_quad_of(old, corners, size, origins);
         for(std::size_t i = 0; i < size; ++i)
-          uv_of_corner[i] = parameter(old, result.sub_quad, origins[corners[i].vertex]);
+          uv_of_corner[i] = old.uv.empty() ? sub_quad_parameter(old, result.sub_quad, origins[corners[i].vertex])
+                                           : parameter(old, linear_rows[corners[i].vertex].terms());
         // in the order of the written face, from halfedge(f)
         const auto f = elements.faces[k];
         int i = 0;
@@ -201,32 +206,31 @@ private:
     return -1; // not reached: every child of the quad split has one
   }
 
-  // the parameter of a new vertex (from `o`) in the domain of the old face
-  static UV parameter(const Old_face& old, int sub_quad, const Vertex_origin& o)
+  // the parameter of a new vertex in the sub-quad at corner `sub_quad` of a base n-gon, from its origin `o`
+  static UV sub_quad_parameter(const Old_face& old, int sub_quad, const Vertex_origin& o)
   {
-    if(old.uv.empty()) { // a sub-quad of a base n-gon: (0,0) at its corner
-      if(o.kind == Origin_kind::vertex)
-        return {0, 0};
-      if(o.kind == Origin_kind::face)
-        return {1, 1};
-      // the edge from corner c (u) or the edge to it (v)
-      return position(old.edges, o.index) == static_cast<std::size_t>(sub_quad) ? UV{1, 0} : UV{0, 1};
-    }
-    const std::size_t n = old.uv.size();
     if(o.kind == Origin_kind::vertex)
-      return old.uv[position(old.vertices, o.index)];
-    if(o.kind == Origin_kind::edge) {
-      const std::size_t c = position(old.edges, o.index);
-      const UV& a = old.uv[c];
-      const UV& b = old.uv[(c + 1) % n];
-      return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
-    }
+      return {0, 0};
+    if(o.kind == Origin_kind::face)
+      return {1, 1};
+    // the edge from corner c (u) or the edge to it (v)
+    return position(old.edges, o.index) == static_cast<std::size_t>(sub_quad) ? UV{1, 0} : UV{0, 1};
+  }
+
+  // the parameter of a new vertex in the domain of the old face: its linear
+  // stencil (over the old face's corner vertices) applied to their parameters
+  template <class Terms>
+  static UV parameter(const Old_face& old, const Terms& terms)
+  {
     UV sum{0, 0};
-    for(const UV& p : old.uv) {
-      sum[0] += p[0];
-      sum[1] += p[1];
+    for(const auto& [vertex, weight] : terms) {
+      const UV& p = old.uv[static_cast<std::size_t>(std::find(old.corners.begin(), old.corners.end(), vertex) -
+                                                    old.corners.begin())];
+      const double w = CGAL::to_double(weight);
+      sum[0] += w * p[0];
+      sum[1] += w * p[1];
     }
-    return {sum[0] / double(n), sum[1] / double(n)};
+    return sum;
   }
 
   // the element of the base mesh where the point of parameter uv of `face` lies
