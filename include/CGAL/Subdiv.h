@@ -10,6 +10,7 @@
 /// positions and normals in <CGAL/Subdiv/limit.h>: a program that only
 /// refines does not compile them.
 
+#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/parameters.h>
 

@@ -5,6 +5,7 @@
 
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Vertex_origin.h>
+#include <CGAL/Subdiv/internal/Carried_data_fwd.h>
 #include <CGAL/Subdiv/internal/mesh_traits.h>
 #include <CGAL/Subdiv/internal/parallel.h>
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
@@ -107,12 +108,13 @@ enum class Face_varying_interpolation {
  *   butterflies, linear); Doo-Sabin and the sqrt3 schemes make faces across the
  *   old edges, and refuse them (doc/provenance.md).
  *
- * Pass it with the named parameter `carried_data`:
+ * Include `<CGAL/Subdiv/Carried_data.h>` (or `<CGAL/Subdiv.h>`), and pass it
+ * with the named parameter `carried_data`:
  * `CGAL::Subdiv::parameters::number_of_iterations(2).carried_data(data)`.
  * The maps must accept the new descriptors: property maps of the mesh itself
  * do (for `Surface_mesh`, maps made with `add_property_map`).
  */
-template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
+template <class Mesh, class FT>
 class Carried_data
 {
 public:

@@ -3,9 +3,9 @@
 #ifndef CGAL_SUBDIV_SUBDIVIDE_H
 #define CGAL_SUBDIV_SUBDIVIDE_H
 
-#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/hosts/Host_for.h>
+#include <CGAL/Subdiv/internal/Carried_data_fwd.h>
 #include <CGAL/Subdiv/internal/isolated_vertices.h>
 #include <CGAL/Subdiv/internal/mesh_checks.h>
 #include <CGAL/Subdiv/internal/parallel.h>
@@ -137,13 +137,15 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
                                Host::peak_bytes_per_face(), levels, internal::max_memory_of(np));
   const internal::Parallel_loop loop = internal::parallel_loop(np);
 
+  // (`Carried_data` is only declared here: its header is included by whoever makes one)
   const Carried_data<PolygonMesh, typename Mask::Number_type>* data = nullptr;
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
+  bool carried = false;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
     data = get_parameter(np, internal::carried_data_t());
-  const bool carried = data != nullptr && !data->empty();
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value)
+    carried = data != nullptr && !data->empty();
     if(carried)
       data->prepare(mask);
+  }
   // set aside before the refinement, put back after it (kept: unrefined)
   internal::Isolated_points<VPM> set_aside;
   if constexpr(may_set_aside)
