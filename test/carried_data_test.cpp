@@ -3,9 +3,16 @@
 // value types users carry: points (UVs as Point_2), vectors, CGAL's colours.
 #include <CGAL/Exact_rational.h>
 #include <CGAL/IO/Color.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/centroid.h>
+
+#include <boost/container_hash/hash.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +22,9 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -177,12 +186,13 @@ Point mix(const std::vector<std::pair<Point, CGAL::Exact_rational>>& terms)
 }
 
 /// the corners of base face `f` of `base` (corner i: the target of the i-th halfedge from halfedge(f))
-std::vector<KE::Point_3> corners_of(const Exact_mesh& base, std::size_t f)
+template <class Base>
+std::vector<KE::Point_3> corners_of(const Base& base, std::size_t f)
 {
   std::vector<KE::Point_3> result;
   const auto face = *std::next(faces(base).begin(), static_cast<std::ptrdiff_t>(f));
   for(auto h : CGAL::halfedges_around_face(halfedge(face, base), base))
-    result.push_back(base.point(target(h, base)));
+    result.push_back(get(CGAL::vertex_point, base, target(h, base)));
   return result;
 }
 
@@ -413,3 +423,165 @@ TEST(CarriedData, smooth_face_varying_modes_are_refused_before_anything_changes)
     EXPECT_EQ(uv[*halfedges(mesh).begin()], K::Point_2(1, 2));
   }
 }
+
+namespace {
+
+using Exact_polyhedron = CGAL::Polyhedron_3<KE>;
+
+/// a map of any descriptor kept beside the mesh: property maps of a Polyhedron_3
+template <class Key, class Value>
+struct Beside_map
+{
+  std::shared_ptr<std::unordered_map<Key, Value, boost::hash<Key>>> values =
+    std::make_shared<std::unordered_map<Key, Value, boost::hash<Key>>>();
+  auto map() const
+  {
+    return boost::associative_property_map<std::unordered_map<Key, Value, boost::hash<Key>>>(*values);
+  }
+};
+
+/// the points of the base element named by `o` (ordinals are the base mesh's own), sorted
+template <class Base>
+std::vector<KE::Point_3> points_of_base_element(const Base& base, const S::Vertex_origin& o)
+{
+  std::vector<KE::Point_3> result;
+  const auto point = [&](auto v) { return get(CGAL::vertex_point, base, v); };
+  const auto at = [](const auto& range, std::size_t i) { return *std::next(range.begin(), std::ptrdiff_t(i)); };
+  if(o.kind == S::Origin_kind::vertex)
+    result.push_back(point(at(vertices(base), o.index)));
+  else if(o.kind == S::Origin_kind::edge) {
+    const auto e = at(edges(base), o.index);
+    result = {point(source(e, base)), point(target(e, base))};
+  } else
+    result = corners_of(base, o.index);
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+/// what the maps of a refined mesh say at a corner (a face and a vertex) found by their points
+struct Corner_record
+{
+  KE::Point_2 vertex_uv, corner_uv;
+  S::Origin_kind base_kind;
+  std::vector<KE::Point_3> base_element; // the points of the base element the vertex lies on
+  std::size_t base_face;
+  KE::Point_3 at_parameter; // the point of the corner's parameter on the base face (bilinear)
+};
+
+/// the records of every corner of `mesh`, keyed by the centroid of its face and the point of its vertex
+template <class Mesh_, class Vpm, class Get>
+std::map<std::pair<KE::Point_3, KE::Point_3>, Corner_record> corner_records(const Mesh_& mesh, const Vpm& vpm,
+                                                                            const Get& record_of)
+{
+  std::map<std::pair<KE::Point_3, KE::Point_3>, Corner_record> result;
+  for(auto f : faces(mesh)) {
+    std::vector<KE::Point_3> points;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      points.push_back(get(vpm, target(h, mesh)));
+    const KE::Point_3 centroid = CGAL::centroid(points.begin(), points.end());
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      result.emplace(std::make_pair(centroid, get(vpm, target(h, mesh))), record_of(f, h, i++));
+  }
+  return result;
+}
+
+/*
+ * Any FaceGraph: a Polyhedron_3 (the generic writer, maps beside the mesh)
+ * carries a linear vertex map, a corner map with seams and the provenance
+ * maps through 2 levels of Catmull-Clark exactly as a Surface_mesh does,
+ * corner by corner (matched by points: the two number their elements apart).
+ */
+TEST(CarriedData, a_polyhedron_carries_corner_maps_and_provenance_as_a_surface_mesh)
+{
+  Exact_mesh mesh = testing_utils::mixed_box<Exact_mesh>();
+  Exact_polyhedron polyhedron;
+  CGAL::copy_face_graph(mesh, polyhedron);
+  ASSERT_EQ(num_faces(polyhedron), num_faces(mesh));
+  // (their faces may start at other corners: parameters are compared by the points they give)
+  const Exact_mesh mesh_base = mesh;
+  const Exact_polyhedron polyhedron_base = polyhedron;
+
+  using SM_H = Exact_mesh::Halfedge_index;
+  auto sm_vertex_uv = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_2>("v:uv").first;
+  auto sm_corner_uv = mesh.add_property_map<SM_H, KE::Point_2>("h:uv").first;
+  auto sm_base = mesh.add_property_map<Exact_mesh::Vertex_index, S::Vertex_origin>("v:origin").first;
+  auto sm_face = mesh.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  using P_V = boost::graph_traits<Exact_polyhedron>::vertex_descriptor;
+  using P_H = boost::graph_traits<Exact_polyhedron>::halfedge_descriptor;
+  using P_F = boost::graph_traits<Exact_polyhedron>::face_descriptor;
+  Beside_map<P_V, KE::Point_2> p_vertex_uv;
+  Beside_map<P_H, KE::Point_2> p_corner_uv;
+  Beside_map<P_V, S::Vertex_origin> p_base;
+  Beside_map<P_F, S::Face_origin> p_face;
+  // the same values on both: the vertex's UV, and at a corner a value of its
+  // face's centroid and its vertex (a seam at every edge)
+  const auto corner_value = [](const auto& g, auto h) {
+    std::vector<KE::Point_3> points;
+    for(auto c : CGAL::halfedges_around_face(h, g))
+      points.push_back(get(CGAL::vertex_point, g, target(c, g)));
+    const KE::Point_3 centre = CGAL::centroid(points.begin(), points.end());
+    const KE::Point_3& corner = get(CGAL::vertex_point, g, target(h, g));
+    return KE::Point_2(centre.x() + 2 * corner.y(), centre.z() - corner.x() / 3);
+  };
+  for(auto v : vertices(mesh))
+    sm_vertex_uv[v] = uv_of(mesh.point(v));
+  for(auto v : vertices(polyhedron))
+    put(p_vertex_uv.map(), v, uv_of(v->point()));
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh))
+      sm_corner_uv[h] = corner_value(mesh, h);
+  for(auto h : halfedges(polyhedron))
+    if(!is_border(h, polyhedron))
+      put(p_corner_uv.map(), h, corner_value(polyhedron, h));
+
+  S::Carried_data<Exact_mesh> sm_data;
+  sm_data.vertex_map(sm_vertex_uv, S::Interpolation::linear)
+    .corner_map(sm_corner_uv, S::Face_varying_interpolation::all)
+    .base_origin_map(sm_base)
+    .face_origin_map(sm_face);
+  S::catmull_clark_subdivision(mesh, S::parameters::number_of_iterations(2).carried_data(sm_data));
+  S::Carried_data<Exact_polyhedron> p_data;
+  p_data.vertex_map(p_vertex_uv.map(), S::Interpolation::linear)
+    .corner_map(p_corner_uv.map(), S::Face_varying_interpolation::all)
+    .base_origin_map(p_base.map())
+    .face_origin_map(p_face.map());
+  S::catmull_clark_subdivision(polyhedron, S::parameters::number_of_iterations(2).carried_data(p_data));
+
+  const auto sm_records = corner_records(mesh, mesh.points(), [&](auto f, auto h, int i) {
+    const S::Face_origin& o = sm_face[f];
+    const S::Vertex_origin b = sm_base[target(h, mesh)];
+    return Corner_record{sm_vertex_uv[target(h, mesh)],
+                         sm_corner_uv[h],
+                         b.kind,
+                         points_of_base_element(mesh_base, b),
+                         o.face,
+                         linear_in_domain(corners_of(mesh_base, o.face), o, o.uv[i])};
+  });
+  const auto p_records = corner_records(polyhedron, get(CGAL::vertex_point, polyhedron), [&](auto f, auto h, int i) {
+    const auto v = target(h, polyhedron);
+    const S::Face_origin o = get(p_face.map(), f);
+    const S::Vertex_origin b = get(p_base.map(), v);
+    return Corner_record{get(p_vertex_uv.map(), v),
+                         get(p_corner_uv.map(), h),
+                         b.kind,
+                         points_of_base_element(polyhedron_base, b),
+                         o.face,
+                         linear_in_domain(corners_of(polyhedron_base, o.face), o, o.uv[i])};
+  });
+  ASSERT_EQ(sm_records.size(), p_records.size());
+  ASSERT_EQ(sm_records.size(), 4 * num_faces(mesh));
+  for(const auto& [key, expected] : sm_records) {
+    const auto found = p_records.find(key);
+    ASSERT_TRUE(found != p_records.end()) << key.second;
+    const Corner_record& got = found->second;
+    EXPECT_EQ(got.vertex_uv, expected.vertex_uv) << key.second;
+    EXPECT_EQ(got.corner_uv, expected.corner_uv) << key.second;
+    EXPECT_EQ(got.base_kind, expected.base_kind) << key.second;
+    EXPECT_EQ(got.base_element, expected.base_element) << key.second;
+    EXPECT_EQ(got.base_face, expected.base_face) << key.second;
+    EXPECT_EQ(got.at_parameter, expected.at_parameter) << key.second;
+  }
+}
+
+} // namespace
