@@ -24,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -49,6 +50,10 @@ struct Edge_split_case
   std::function<void(Exact_mesh&, const S::Carried_data<Exact_mesh>*)> refine;
   /// 2 levels of the linear scheme of the split: the same numbering
   std::function<void(Exact_mesh&)> refine_linearly;
+  /// 2 levels of the scheme with vertex sharpness tags, carrying `data`
+  std::function<void(Exact_mesh&, Exact_mesh::Property_map<Exact_mesh::Vertex_index, double>,
+                     const S::Carried_data<Exact_mesh>*)>
+    refine_tagged;
 };
 
 /// Catmull-Clark on a box of quads and triangles, with the bilinear scheme
@@ -61,7 +66,11 @@ Edge_split_case catmull_clark_case()
             else
               S::catmull_clark_subdivision(m, S::parameters::number_of_iterations(2));
           },
-          [](Exact_mesh& m) { S::linear_quad_subdivision(m, S::parameters::number_of_iterations(2)); }};
+          [](Exact_mesh& m) { S::linear_quad_subdivision(m, S::parameters::number_of_iterations(2)); },
+          [](Exact_mesh& m, auto sharpness, const S::Carried_data<Exact_mesh>* data) {
+            S::catmull_clark_subdivision(
+              m, S::parameters::number_of_iterations(2).vertex_sharpness_map(sharpness).carried_data(*data));
+          }};
 }
 
 /// Loop on an open fan of 5 triangles, with the linear triangle scheme
@@ -74,7 +83,11 @@ Edge_split_case loop_case()
             else
               S::loop_subdivision(m, S::parameters::number_of_iterations(2));
           },
-          [](Exact_mesh& m) { S::linear_triangle_subdivision(m, S::parameters::number_of_iterations(2)); }};
+          [](Exact_mesh& m) { S::linear_triangle_subdivision(m, S::parameters::number_of_iterations(2)); },
+          [](Exact_mesh& m, auto sharpness, const S::Carried_data<Exact_mesh>* data) {
+            S::loop_subdivision(
+              m, S::parameters::number_of_iterations(2).vertex_sharpness_map(sharpness).carried_data(*data));
+          }};
 }
 
 /*
@@ -404,24 +417,135 @@ TEST(CarriedData, schemes_without_a_linear_scheme_refuse_what_needs_one_and_chan
     }
 }
 
-TEST(CarriedData, smooth_face_varying_modes_are_refused_before_anything_changes)
+namespace {
+
+/// the mesh of `mesh`'s corner values: one vertex per vertex and value, at
+/// (u, v, 0), its faces in the order of `mesh`'s, each from the same corner
+Exact_mesh value_mesh(const Exact_mesh& mesh, Exact_mesh::Property_map<Exact_mesh::Halfedge_index, KE::Point_2> uv)
 {
-  for(const auto mode : {S::Face_varying_interpolation::none, S::Face_varying_interpolation::corners_only,
-                         S::Face_varying_interpolation::corners_plus1, S::Face_varying_interpolation::corners_plus2,
-                         S::Face_varying_interpolation::boundaries}) {
-    Mesh mesh = testing_utils::cube<Mesh>();
-    auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(1, 2)).first;
-    S::Carried_data<Mesh> data;
-    data.corner_map(uv, mode);
-    try {
-      S::catmull_clark_subdivision(mesh, S::parameters::carried_data(data));
-      ADD_FAILURE() << "a smooth face-varying mode was accepted";
-    } catch(const S::Bad_input& e) {
-      EXPECT_NE(std::string(e.what()).find("Face_varying_interpolation::all"), std::string::npos) << e.what();
+  Exact_mesh values;
+  std::map<std::pair<Exact_mesh::Vertex_index, KE::Point_2>, Exact_mesh::Vertex_index> vertex_of;
+  for(auto f : faces(mesh)) {
+    std::vector<Exact_mesh::Vertex_index> corners;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const auto key = std::make_pair(target(h, mesh), uv[h]);
+      if(vertex_of.count(key) == 0)
+        vertex_of[key] = values.add_vertex(KE::Point_3(uv[h].x(), uv[h].y(), 0));
+      corners.push_back(vertex_of[key]);
     }
-    EXPECT_EQ(num_faces(mesh), 6u);
-    EXPECT_EQ(uv[*halfedges(mesh).begin()], K::Point_2(1, 2));
+    EXPECT_NE(values.add_face(corners), Exact_mesh::null_face());
   }
+  return values;
+}
+
+/// the corners of a refined mesh by base face and parameter (face_origin_map)
+using Corner_key = std::tuple<std::size_t, int, double, double>;
+
+template <class Value, class CornerValue>
+std::map<Corner_key, Value> corners_by_origin(const Exact_mesh& mesh,
+                                              Exact_mesh::Property_map<Exact_mesh::Face_index, S::Face_origin> origin,
+                                              const CornerValue& value_at)
+{
+  std::map<Corner_key, Value> result;
+  for(auto f : faces(mesh)) {
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const S::Face_origin& o = origin[f];
+      result[Corner_key(o.face, o.sub_quad, o.uv[i][0], o.uv[i][1])] = value_at(h);
+      ++i;
+    }
+  }
+  return result;
+}
+
+/*
+ * A seam is a border of the face-varying topology: UVs with seams (two charts
+ * of faces, the UV of a corner an affine function of its point, shifted in
+ * the second chart), carried through 2 levels in `mode`, equal exactly the
+ * points of the mesh of the values (one vertex per vertex and value, cut at
+ * the seams) refined by the scheme, with `kept(vertex of that mesh)` (those
+ * that the mode keeps) made infinitely sharp. Corners are matched by their
+ * base face and parameter.
+ */
+template <class Kept>
+void expect_seams_refined_as_borders(const Edge_split_case& scheme, S::Face_varying_interpolation mode,
+                                     const Kept& kept)
+{
+  Exact_mesh mesh = scheme.base;
+  auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, KE::Point_2>("h:uv").first;
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      uv[h] = uv_of(mesh.point(target(h, mesh))) + KE::Vector_2(f.idx() < 2 ? 5 : 0, 0);
+  Exact_mesh values = value_mesh(mesh, uv);
+  ASSERT_GT(num_vertices(values), num_vertices(mesh)); // there are seams
+  auto sharpness = values.add_property_map<Exact_mesh::Vertex_index, double>("v:sharpness", 0).first;
+  std::size_t kept_count = 0;
+  for(auto v : vertices(values))
+    if(kept(values, v)) {
+      sharpness[v] = 10;
+      ++kept_count;
+    }
+
+  auto origin = mesh.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, mode).face_origin_map(origin);
+  scheme.refine(mesh, &data);
+  auto value_origin = values.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  S::Carried_data<Exact_mesh> value_data;
+  value_data.face_origin_map(value_origin);
+  scheme.refine_tagged(values, sharpness, &value_data);
+
+  const auto carried = corners_by_origin<KE::Point_2>(mesh, origin, [&](auto h) { return uv[h]; });
+  const auto expected = corners_by_origin<KE::Point_2>(values, value_origin, [&](auto h) {
+    const KE::Point_3& p = values.point(target(h, values));
+    return KE::Point_2(p.x(), p.y());
+  });
+  ASSERT_EQ(carried.size(), expected.size());
+  for(const auto& [key, value] : carried)
+    EXPECT_EQ(value, expected.at(key)) << "base face " << std::get<0>(key) << " at (" << std::get<2>(key) << ", "
+                                       << std::get<3>(key) << ")";
+  if(mode != S::Face_varying_interpolation::none) {
+    EXPECT_GT(kept_count, 0u);
+  }
+}
+
+bool is_border_vertex(const Exact_mesh& m, Exact_mesh::Vertex_index v)
+{
+  return bool(CGAL::is_border(v, m));
+}
+
+bool is_corner_vertex(const Exact_mesh& m, Exact_mesh::Vertex_index v)
+{
+  return is_border_vertex(m, v) && m.degree(v) == 2;
+}
+
+void expect_seams_refined_as_borders_in_three_modes(const Edge_split_case& scheme)
+{
+  {
+    SCOPED_TRACE("none");
+    expect_seams_refined_as_borders(scheme, S::Face_varying_interpolation::none,
+                                    [](const auto&, auto) { return false; });
+  }
+  {
+    SCOPED_TRACE("corners_only");
+    expect_seams_refined_as_borders(scheme, S::Face_varying_interpolation::corners_only, is_corner_vertex);
+  }
+  {
+    SCOPED_TRACE("boundaries");
+    expect_seams_refined_as_borders(scheme, S::Face_varying_interpolation::boundaries, is_border_vertex);
+  }
+}
+
+} // namespace
+
+TEST(CarriedData, catmull_clark_refines_seams_as_borders_exactly)
+{
+  expect_seams_refined_as_borders_in_three_modes(catmull_clark_case());
+}
+
+TEST(CarriedData, loop_refines_seams_as_borders_exactly)
+{
+  expect_seams_refined_as_borders_in_three_modes(loop_case());
 }
 
 namespace {

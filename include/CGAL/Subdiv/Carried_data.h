@@ -11,6 +11,7 @@
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/parameters.h>
+#include <CGAL/Subdiv/refinement/Face_varying.h>
 #include <CGAL/Subdiv/refinement/Inherited_face_map.h>
 #include <CGAL/Subdiv/refinement/Provenance.h>
 #include <CGAL/Subdiv/refinement/carried_values.h>
@@ -53,22 +54,6 @@ enum class Interpolation {
 
 /*!
  * \ingroup PkgSubdivFunctions
- * How `Carried_data` interpolates a corner map (face-varying data, such as
- * UVs with seams): OpenSubdiv's `Sdc::Options::FVarLinearInterpolation`,
- * value for value. Only `all` is implemented so far; the others are refused
- * with `Bad_input` (doc/provenance.md, "Face-varying data").
- */
-enum class Face_varying_interpolation {
-  none,          ///< smooth everywhere, seams refined as borders (`FVAR_LINEAR_NONE`)
-  corners_only,  ///< as `none`, with sharp corners (`FVAR_LINEAR_CORNERS_ONLY`)
-  corners_plus1, ///< OpenSubdiv's and USD's usual choice (`FVAR_LINEAR_CORNERS_PLUS1`)
-  corners_plus2, ///< `FVAR_LINEAR_CORNERS_PLUS2`
-  boundaries,    ///< linear along seams and borders (`FVAR_LINEAR_BOUNDARIES`)
-  all            ///< linear in every face (`FVAR_LINEAR_ALL`): the linear scheme of the split, face by face
-};
-
-/*!
- * \ingroup PkgSubdivFunctions
  * Per-element data that `subdivide()` carries to the refined mesh besides the
  * points.
  *
@@ -83,13 +68,18 @@ enum class Face_varying_interpolation {
  *   the mask's `FT` when the values are made of it (the `FT` itself, or a
  *   kernel object of a kernel with that `FT`: exact values stay exact), a
  *   `double` otherwise.
- * - `corner_map(map, Face_varying_interpolation::all)`: a halfedge property
- *   map of per-corner values (the value of face(h) at target(h)), such as UVs
- *   with seams: two corners at one vertex with different values are a seam.
- *   With `all`, every corner of a new face gets the combination of the corner
- *   values of its parent face that the linear scheme of the split gives its
- *   vertex (for the schemes that split edges); a seam stays a seam. Border
- *   halfedges are left alone.
+ * - `corner_map(map, mode)`: a halfedge property map of per-corner values
+ *   (the value of face(h) at target(h)), such as UVs with seams: two corners
+ *   at one vertex with different values are a seam (values are compared with
+ *   `==`). With the smooth modes (`Face_varying_interpolation`), the mesh is
+ *   cut along the seams, every value being a vertex of the cut mesh and every
+ *   seam a border of it; the cut mesh is refined with the scheme's mask and
+ *   the level's sharpness tags, the vertices that the mode keeps being made
+ *   infinitely sharp: so a seam follows the border rules, as in OpenSubdiv.
+ *   With `all` (and with the linear schemes in every mode), every corner of a
+ *   new face gets the combination of the corner values of its parent face
+ *   that the linear scheme of the split gives its vertex. A seam stays a
+ *   seam; border halfedges are left alone. For the schemes that split edges.
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -124,26 +114,14 @@ public:
   using Vertex_stencils = std::vector<Stencil<vertex_descriptor, FT>>;
   /// after the rebuild: writes the values of the new vertices
   using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
-  /// a new face of a level: its parent (old face ordinal) and its vertices (new indices), as the host made them
-  struct New_face
-  {
-    face_descriptor face;
-    std::size_t parent = 0;
-    int size = 0;
-    std::array<std::size_t, 4> vertices{};
-
-    /// the position among `vertices` of the new vertex `v`
-    int corner_at(vertex_descriptor v, const std::vector<vertex_descriptor>& new_vertices) const
-    {
-      int i = 0;
-      while(i + 1 < size && new_vertices[vertices[i]] != v)
-        ++i;
-      return i;
-    }
-  };
+  /// a new face of a level, its parent and its vertices
+  using New_face = internal::New_face<Mesh>;
   /// after the rebuild: writes the values of the corners of the new faces
-  using Corner_writer =
-    std::function<void(const Mesh&, const std::vector<New_face>&, const std::vector<vertex_descriptor>&)>;
+  using Corner_writer = std::function<void(const Mesh&, const std::vector<New_face>&,
+                                           const std::vector<vertex_descriptor>&, const std::vector<Vertex_origin>&)>;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  /// the rows of a level of a corner map interpolated smoothly
+  using Face_varying_rows = internal::Face_varying_rows<Mesh, FT>;
   /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
   using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
@@ -179,7 +157,8 @@ public:
           old->back().emplace_back(target(h, mesh), get(map, h));
       }
       return [map, old, &linear_rows](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
-                                      const std::vector<vertex_descriptor>& new_vertices) {
+                                      const std::vector<vertex_descriptor>& new_vertices,
+                                      const std::vector<Vertex_origin>&) {
         for(const New_face& face : new_faces) {
           const auto& parent = (*old)[face.parent];
           const auto value_of = [&parent](vertex_descriptor u) -> const Value& {
@@ -193,7 +172,31 @@ public:
         }
       };
     };
-    m_corner_channels.push_back(Corner_channel{interpolation, make_writer});
+    // the smooth modes: the values of the cut mesh's rows, put where the origins say
+    const auto make_smooth_writer = [map](const Face_varying_rows& fvar) -> Corner_writer {
+      using Value = typename boost::property_traits<CornerMap>::value_type;
+      const auto value_of = [&](typename Face_varying_rows::Cut_vertex v) -> Value {
+        return get(map, fvar.corner_of_value[v]);
+      };
+      auto values = std::make_shared<std::vector<Value>>();
+      values->reserve(fvar.rows.size());
+      for(const auto& row : fvar.rows)
+        values->push_back(internal::combine_values<Value>(value_of, row.terms()));
+      auto lookup = std::make_shared<Face_varying_rows>();
+      lookup->face_starts = fvar.face_starts;
+      lookup->entries = fvar.entries;
+      return [map, values, lookup](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
+                                   const std::vector<vertex_descriptor>& new_vertices,
+                                   const std::vector<Vertex_origin>& origins) {
+        for(const New_face& face : new_faces)
+          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh)) {
+            const std::size_t j = face.vertices[face.corner_at(target(h, new_mesh), new_vertices)];
+            put(map, h, (*values)[lookup->row_of(face.parent, origins[j])]);
+          }
+      };
+    };
+    const auto same = [map](halfedge_descriptor a, halfedge_descriptor b) { return get(map, a) == get(map, b); };
+    m_corner_channels.push_back(Corner_channel{interpolation, make_writer, make_smooth_writer, same});
     return *this;
   }
 
@@ -257,7 +260,7 @@ public:
       if(m_data->interpolates(Interpolation::linear) || !m_data->m_corner_channels.empty() ||
          m_data->wants_provenance())
         m_linear_stencils.read(host, linear_mask(mask), loop);
-      if(m_data->m_origins != nullptr || m_data->wants_provenance()) {
+      if(m_data->m_origins != nullptr || m_data->wants_provenance() || !m_data->m_corner_channels.empty()) {
         m_new_origins.clear();
         for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
           m_new_origins.push_back(host.origin(j));
@@ -269,8 +272,16 @@ public:
       for(const auto& channel : m_data->m_vertex_channels)
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
-      for(const auto& channel : m_data->m_corner_channels)
+      for(const auto& channel : m_data->m_corner_channels) {
+        if constexpr(has_sharp_level<Mask>::value)
+          if(channel.interpolation != Face_varying_interpolation::all) {
+            m_corner_writers.push_back(channel.make_smooth_writer(
+              internal::face_varying_rows<Mesh, FT>(*m_mesh, mask, channel.interpolation, channel.same)));
+            continue;
+          }
+        // linear in every face (the linear schemes are linear in every mode)
         m_corner_writers.push_back(channel.make_writer(*m_mesh, m_linear_stencils.rows));
+      }
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
     }
@@ -278,10 +289,14 @@ public:
     template <class New_level>
     void write(const New_level& level)
     {
-      if(m_data->wants_provenance())
-        write_provenance(level);
-      if(!m_corner_writers.empty())
-        write_corners(level);
+      if(m_data->wants_provenance() || !m_corner_writers.empty()) {
+        const std::vector<New_face> new_faces = internal::new_faces_of<Mesh>(level);
+        const auto& new_vertices = level.elements().vertices;
+        if(m_data->wants_provenance())
+          write_provenance(new_faces, new_vertices);
+        for(const auto& write : m_corner_writers)
+          write(*m_mesh, new_faces, new_vertices, m_new_origins);
+      }
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -295,25 +310,6 @@ public:
     }
 
   private:
-    template <class New_level>
-    void write_corners(const New_level& level)
-    {
-      std::vector<New_face> new_faces(level.faces().number_of_faces());
-      const auto& record = level.faces();
-      const auto& elements = level.elements();
-      for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
-        record.for_each_face_in_block(b, [&](std::size_t k, const auto* corners, std::size_t size, std::size_t parent) {
-          New_face& face = new_faces[k];
-          face.face = elements.faces[k];
-          face.parent = parent;
-          face.size = static_cast<int>(size);
-          for(std::size_t i = 0; i < size; ++i)
-            face.vertices[i] = corners[i].vertex;
-        });
-      for(const auto& write : m_corner_writers)
-        write(*m_mesh, new_faces, elements.vertices);
-    }
-
     template <class Mask>
     void read_provenance(const Mask&)
     {
@@ -322,8 +318,7 @@ public:
       m_provenance.read(*m_mesh, provenance.base_pending, Mask::split == Split::quad, origin_of, provenance.base);
     }
 
-    template <class New_level>
-    void write_provenance(const New_level& level)
+    void write_provenance(const std::vector<New_face>& new_faces, const std::vector<vertex_descriptor>& new_vertices)
     {
       Provenance& provenance = m_data->m_provenance;
       provenance.faces.clear();
@@ -332,7 +327,8 @@ public:
         if(provenance.put_face)
           provenance.put_face(f, origin);
       };
-      m_provenance.write(*m_mesh, level, m_new_origins, m_linear_stencils.rows, put_face, provenance.put_vertex);
+      m_provenance.write(*m_mesh, new_faces, new_vertices, m_new_origins, m_linear_stencils.rows, put_face,
+                         provenance.put_vertex);
       provenance.base_pending = false;
     }
 
@@ -355,11 +351,6 @@ public:
   {
     if(interpolates(Interpolation::linear) || !m_corner_channels.empty() || wants_provenance())
       (void)linear_mask(mask);
-    for(const Corner_channel& channel : m_corner_channels)
-      if(channel.interpolation != Face_varying_interpolation::all)
-        internal::refuse(internal::Message() << "Carried_data: corner_map with a smooth face-varying interpolation is "
-                                                "not implemented yet; Face_varying_interpolation::all (linear in "
-                                                "every face) is");
     m_provenance.base_pending = true;
   }
 
@@ -414,7 +405,20 @@ private:
     Face_varying_interpolation interpolation;
     /// reads the old corner values, combines them by the linear stencils of the new vertices
     std::function<Corner_writer(const Mesh&, const Vertex_stencils&)> make_writer;
+    /// reads the old corner values, combines them by the rows of the cut mesh
+    std::function<Corner_writer(const Face_varying_rows&)> make_smooth_writer;
+    /// whether two corners hold equal values
+    std::function<bool(halfedge_descriptor, halfedge_descriptor)> same;
   };
+
+  // whether a mask refines with sharpness tags (the smooth face-varying modes
+  // cut the mesh and tag the cut); the linear masks are linear in every mode
+  template <class Mask, class = void>
+  struct has_sharp_level : std::false_type
+  {};
+  template <class Mask>
+  struct has_sharp_level<Mask, std::void_t<decltype(std::declval<const Mask&>().sharp_level())>> : std::true_type
+  {};
 
   std::vector<Vertex_channel> m_vertex_channels;
   std::vector<Corner_channel> m_corner_channels;

@@ -70,6 +70,46 @@ struct Face_origin
 
 namespace internal {
 
+/// a new face of a level: its parent (old face ordinal) and its corners'
+/// new vertices (new indices), as the host made them
+template <class Mesh>
+struct New_face
+{
+  typename boost::graph_traits<Mesh>::face_descriptor face;
+  std::size_t parent = 0;
+  int size = 0;
+  std::array<std::size_t, 4> vertices{};
+
+  /// the position among `vertices` of the new vertex `v`
+  int corner_at(typename boost::graph_traits<Mesh>::vertex_descriptor v,
+                const std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& new_vertices) const
+  {
+    int i = 0;
+    while(i + 1 < size && new_vertices[vertices[i]] != v)
+      ++i;
+    return i;
+  }
+};
+
+/// the new faces of `level` (a `New_level` of `refine_level`), by new index
+template <class Mesh, class New_level>
+std::vector<New_face<Mesh>> new_faces_of(const New_level& level)
+{
+  const auto& record = level.faces();
+  const auto& elements = level.elements();
+  std::vector<New_face<Mesh>> result(record.number_of_faces());
+  for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
+    record.for_each_face_in_block(b, [&](std::size_t k, const auto* corners, std::size_t size, std::size_t parent) {
+      New_face<Mesh>& face = result[k];
+      face.face = elements.faces[k];
+      face.parent = parent;
+      face.size = static_cast<int>(size);
+      for(std::size_t i = 0; i < size; ++i)
+        face.vertices[i] = corners[i].vertex;
+    });
+  return result;
+}
+
 /*
  * The provenance sink of one level (`Carried_data::Level` holds one): it reads
  * the old faces (their corners' vertex and edge ordinals, and their parameters
@@ -138,44 +178,39 @@ public:
   }
 
   /*
-   * After the level: put_face(f, origin) for every new face (from the
-   * record's corners and parents, `origins` of the new vertices and their
-   * `linear_rows`, the stencils of the linear scheme of the split), and
-   * put_vertex(v, origin in the base mesh) for every vertex if put_vertex
-   * is not empty.
+   * After the level: put_face(f, origin) for every new face (`new_faces`,
+   * with `new_vertices` their descriptors, `origins` of the new vertices and
+   * their `linear_rows`, the stencils of the linear scheme of the split),
+   * and put_vertex(v, origin in the base mesh) for every vertex if
+   * put_vertex is not empty.
    */
-  template <class New_level, class Rows, class Put_face, class Put_vertex>
-  void write(const Mesh& mesh, const New_level& level, const std::vector<Vertex_origin>& origins,
+  template <class Rows, class Put_face, class Put_vertex>
+  void write(const Mesh& mesh, const std::vector<New_face<Mesh>>& new_faces,
+             const std::vector<typename GT::vertex_descriptor>& new_vertices, const std::vector<Vertex_origin>& origins,
              const Rows& linear_rows, const Put_face& put_face, const Put_vertex& put_vertex) const
   {
-    const auto& elements = level.elements();
-    const auto& record = level.faces();
-    for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
-      record.for_each_face_in_block(b, [&](std::size_t k, const auto* corners, std::size_t size, std::size_t parent) {
-        const Old_face& old = m_old[parent];
-        Face_origin result = old.origin;
-        result.corners = static_cast<int>(size);
-        std::array<UV, 4> uv_of_corner{};
-        if(old.uv.empty())
-          result.sub_quad = sub_quad_of(old, corners, size, origins);
-        for(std::size_t i = 0; i < size; ++i)
-          uv_of_corner[i] = old.uv.empty() ? sub_quad_parameter(old, result.sub_quad, origins[corners[i].vertex])
-                                           : parameter(old, linear_rows[corners[i].vertex].terms());
-        // in the order of the written face, from halfedge(f)
-        const auto f = elements.faces[k];
-        int i = 0;
-        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-          const auto v = target(h, mesh);
-          const std::size_t c = static_cast<std::size_t>(
-            std::find_if(corners, corners + size,
-                         [&](const auto& corner) { return elements.vertices[corner.vertex] == v; }) -
-            corners);
-          result.uv[i++] = uv_of_corner[c];
-          if(put_vertex)
-            put_vertex(v, base_origin(result, uv_of_corner[c]));
-        }
-        put_face(f, result);
-      });
+    for(const New_face<Mesh>& face : new_faces) {
+      const Old_face& old = m_old[face.parent];
+      Face_origin result = old.origin;
+      result.corners = face.size;
+      std::array<UV, 4> uv_of_corner{};
+      if(old.uv.empty())
+        result.sub_quad = sub_quad_of(old, face, origins);
+      for(int i = 0; i < face.size; ++i) {
+        const std::size_t j = face.vertices[i];
+        uv_of_corner[i] = old.uv.empty() ? sub_quad_parameter(old, result.sub_quad, origins[j])
+                                         : parameter(old, linear_rows[j].terms());
+      }
+      // in the order of the written face, from halfedge(f)
+      int i = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face.face, mesh), mesh)) {
+        const UV& uv = uv_of_corner[face.corner_at(target(h, mesh), new_vertices)];
+        result.uv[i++] = uv;
+        if(put_vertex)
+          put_vertex(target(h, mesh), base_origin(result, uv));
+      }
+      put_face(face.face, result);
+    }
   }
 
 private:
@@ -194,12 +229,10 @@ private:
   }
 
   // the corner of the old n-gon at the child quad's one corner made from an old vertex
-  template <class Corner>
-  static int sub_quad_of(const Old_face& old, const Corner* corners, std::size_t size,
-                         const std::vector<Vertex_origin>& origins)
+  static int sub_quad_of(const Old_face& old, const New_face<Mesh>& face, const std::vector<Vertex_origin>& origins)
   {
-    for(std::size_t i = 0; i < size; ++i) {
-      const Vertex_origin o = origins[corners[i].vertex];
+    for(int i = 0; i < face.size; ++i) {
+      const Vertex_origin o = origins[face.vertices[i]];
       if(o.kind == Origin_kind::vertex)
         return static_cast<int>(position(old.vertices, o.index));
     }

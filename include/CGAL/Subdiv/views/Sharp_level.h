@@ -124,6 +124,13 @@ public:
   /// are not both sharp on the next level: its sharpness, as in OpenSubdiv
   FT edge_weight(std::size_t e) const { return FT(m_edge[e]); }
 
+  /// the sharpness of edge e (ordinal) on this level (infinite on a border)
+  const S& edge_sharpness(std::size_t e) const { return m_edge[e]; }
+  /// the sharpness of vertex i (ordinal) on this level (infinite at a pinned corner)
+  const S& vertex_sharpness(std::size_t i) const { return m_vertex[i]; }
+  /// how the sharpness decays from this level to the next
+  Crease_method method() const { return m_method; }
+
   /// whether edge e (ordinal) is sharp on this level (a border edge, or a tag above 0)
   bool is_sharp_edge(std::size_t e) const { return Rules::is_sharp(m_edge[e]); }
 

@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_REFINEMENT_FACE_VARYING_H
+#define CGAL_SUBDIV_REFINEMENT_FACE_VARYING_H
+
+/// \file Face_varying.h
+/// The face-varying topology of one level: the mesh cut along the seams of
+/// a corner map, so that a seam is a border, refined with the level's mask
+/// and sharpness as any mesh is. The interpolation mode sharpens vertices of
+/// the cut mesh (OpenSubdiv's `FVarLinearInterpolation`). `Carried_data`
+/// combines the corner values with the rows this makes.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/hosts/Vertex_origin.h>
+#include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/refinement/refine_level.h>
+#include <CGAL/Subdiv/stencils/Stencil.h>
+#include <CGAL/Subdiv/views/Sharp_level.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivFunctions
+ * How `Carried_data` interpolates a corner map (face-varying data, such as
+ * UVs with seams): OpenSubdiv's `Sdc::Options::FVarLinearInterpolation`,
+ * value for value. A seam (an edge whose two faces disagree at one of its
+ * ends) is refined as a border; the modes say which vertices of the
+ * face-varying topology are kept where they are (doc/provenance.md,
+ * "Face-varying data").
+ */
+enum class Face_varying_interpolation {
+  none,          ///< smooth everywhere, seams refined as borders (`FVAR_LINEAR_NONE`)
+  corners_only,  ///< as `none`, with the corners (a value in one face) kept (`FVAR_LINEAR_CORNERS_ONLY`)
+  corners_plus1, ///< also the junctions of three regions or more: OpenSubdiv's and USD's usual choice
+  corners_plus2, ///< also the darts (a seam that ends inside) (`FVAR_LINEAR_CORNERS_PLUS2`)
+  boundaries,    ///< every value on a seam or a border kept, seams linear (`FVAR_LINEAR_BOUNDARIES`)
+  all            ///< linear in every face (`FVAR_LINEAR_ALL`): the linear scheme of the split, face by face
+};
+
+namespace internal {
+
+/// the mesh that a face-varying topology is cut into: its points are never read
+using Face_varying_cut_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+
+/*
+ * The rows of one level of a corner map: the rows of the new vertices of the
+ * cut mesh over its old vertices (one per value), and, for every corner of
+ * every new face, which row gives its value.
+ */
+template <class Mesh, class FT>
+struct Face_varying_rows
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using Cut_vertex = typename Face_varying_cut_mesh::Vertex_index;
+
+  /// a corner of the old mesh that holds the value of each cut vertex (by index)
+  std::vector<halfedge_descriptor> corner_of_value;
+  /// the row of every new vertex of the cut mesh
+  std::vector<Stencil<Cut_vertex, FT>> rows;
+
+  /// where the value of a new corner comes from: the element of old face
+  /// `face` (ordinal) that made the corner's vertex
+  struct Entry
+  {
+    Origin_kind kind;
+    std::size_t element;
+    std::size_t row;
+  };
+  std::vector<std::size_t> face_starts{0};
+  std::vector<Entry> entries;
+
+  /// the row of the new vertex that `origin` (of the old mesh) makes in old face `face`
+  std::size_t row_of(std::size_t face, const Vertex_origin& origin) const
+  {
+    for(std::size_t k = face_starts[face]; k < face_starts[face + 1]; ++k)
+      if(entries[k].kind == origin.kind && entries[k].element == origin.index)
+        return entries[k].row;
+    refuse(Message() << "Carried_data: a new corner has no face-varying value (an internal error: please report it)");
+    return 0;
+  }
+};
+
+/*
+ * The face-varying topology of a corner map on one level of `mesh`: the
+ * corners at a vertex that meet across edges where the values agree at both
+ * ends form one value (a vertex of the cut mesh); an edge where they do not
+ * is a seam, a border of the cut mesh.
+ */
+template <class Mesh>
+class Face_varying_topology
+{
+  using GT = boost::graph_traits<Mesh>;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using Cut = Face_varying_cut_mesh;
+
+public:
+  /// `same(h, g)`: whether corners h and g (halfedges, into their vertex) hold equal values
+  Face_varying_topology(const Mesh& mesh, const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+    : m_mesh(&mesh), m_number(mesh)
+  {
+    join_corners(same);
+    make_values(same);
+    make_cut_mesh();
+  }
+
+  const Cut& cut() const { return m_cut; }
+  const Mesh_numbering<Mesh>& numbering() const { return m_number; }
+  /// the vertex of the cut mesh at corner h (a halfedge with a face)
+  typename Cut::Vertex_index value_at(halfedge_descriptor h) const { return m_value_of[m_number(h)]; }
+  halfedge_descriptor corner_of(typename Cut::Vertex_index v) const { return m_corner_of[v]; }
+  /// the vertex of the old mesh (ordinal) of a cut vertex
+  std::size_t vertex_of(typename Cut::Vertex_index v) const { return m_vertex_of[v]; }
+  /// the edge of the old mesh (ordinal) of a cut edge
+  std::size_t edge_of(typename Cut::Edge_index e) const { return m_edge_of[e]; }
+  /// the number of values at the vertex of cut vertex v
+  int values_at_vertex(typename Cut::Vertex_index v) const { return m_values_at[m_vertex_of[v]]; }
+  /// whether the vertex of cut vertex v is on a border of the old mesh
+  bool is_on_mesh_border(typename Cut::Vertex_index v) const
+  {
+    return bool(CGAL::is_border(target(m_corner_of[v], *m_mesh), *m_mesh));
+  }
+  /// whether another value of v's vertex is equal to v's, across seams on both sides
+  bool is_disjoint(typename Cut::Vertex_index v) const { return m_disjoint[v]; }
+  /// the cut halfedge of corner h (the same edge and face)
+  typename Cut::Halfedge_index cut_halfedge(halfedge_descriptor h) const { return m_cut_halfedge[m_number(h)]; }
+
+private:
+  std::size_t root(std::size_t h)
+  {
+    while(m_parent[h] != h)
+      h = m_parent[h] = m_parent[m_parent[h]];
+    return h;
+  }
+
+  // corners h (in face f1, into v) and o (across the edge leaving v in f1)
+  // are one value when the values agree at v and at the edge's other end
+  void join_corners(const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  {
+    const Mesh& mesh = *m_mesh;
+    m_parent.resize(2 * num_edges(mesh));
+    std::iota(m_parent.begin(), m_parent.end(), std::size_t(0));
+    for(auto f : faces(mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const halfedge_descriptor leaving = next(h, mesh), o = opposite(leaving, mesh);
+        if(!CGAL::is_border(o, mesh) && same(h, o) && same(leaving, prev(o, mesh)))
+          m_parent[root(m_number(h))] = root(m_number(o));
+      }
+  }
+
+  void make_values(const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  {
+    const Mesh& mesh = *m_mesh;
+    const std::size_t none = static_cast<std::size_t>(-1);
+    std::vector<std::size_t> value_of_root(m_parent.size(), none);
+    m_value_of.assign(m_parent.size(), Cut::Vertex_index());
+    m_values_at.assign(num_vertices(mesh), 0);
+    for(auto f : faces(mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        std::size_t& value = value_of_root[root(m_number(h))];
+        if(value == none) {
+          value = m_corner_of.size();
+          m_corner_of.push_back(h);
+          m_vertex_of.push_back(m_number(target(h, mesh)));
+          ++m_values_at[m_vertex_of.back()];
+          m_cut.add_vertex();
+        }
+        m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
+      }
+    // equal values in sectors that seams separate on both sides
+    m_disjoint.assign(m_corner_of.size(), false);
+    std::vector<std::vector<std::size_t>> values_of_vertex(num_vertices(mesh));
+    for(std::size_t v = 0; v < m_corner_of.size(); ++v)
+      values_of_vertex[m_vertex_of[v]].push_back(v);
+    for(const auto& values : values_of_vertex)
+      for(std::size_t a = 0; a < values.size(); ++a)
+        for(std::size_t b = a + 1; b < values.size(); ++b)
+          if(same(m_corner_of[values[a]], m_corner_of[values[b]]))
+            m_disjoint[values[a]] = m_disjoint[values[b]] = true;
+  }
+
+  void make_cut_mesh()
+  {
+    const Mesh& mesh = *m_mesh;
+    m_cut_halfedge.assign(m_parent.size(), Cut::Halfedge_index());
+    std::vector<typename Cut::Vertex_index> corners;
+    for(auto f : faces(mesh)) {
+      corners.clear();
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        corners.push_back(value_at(h));
+      const typename Cut::Face_index cut_face = m_cut.add_face(corners);
+      if(cut_face == Cut::null_face())
+        refuse(Message() << "Carried_data: the corner values around vertex "
+                         << m_number(target(halfedge(f, mesh), mesh)) << " of face " << m_number(f)
+                         << " do not make a manifold face-varying topology");
+      // the cut face's halfedges, in the order of the old face's
+      typename Cut::Halfedge_index c = m_cut.halfedge(cut_face);
+      while(m_cut.target(c) != corners.front())
+        c = m_cut.next(c);
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        m_cut_halfedge[m_number(h)] = c;
+        c = m_cut.next(c);
+      }
+    }
+    m_edge_of.assign(m_cut.number_of_edges(), 0);
+    for(auto f : faces(mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        m_edge_of[m_cut.edge(cut_halfedge(h))] = m_number(h) >> 1;
+  }
+
+  const Mesh* m_mesh;
+  Mesh_numbering<Mesh> m_number;
+  std::vector<std::size_t> m_parent;                        // union-find over the corners, by halfedge ordinal
+  std::vector<typename Cut::Vertex_index> m_value_of;       // by halfedge ordinal (corners only)
+  std::vector<halfedge_descriptor> m_corner_of;             // by cut vertex
+  std::vector<std::size_t> m_vertex_of;                     // by cut vertex
+  std::vector<int> m_values_at;                             // by old vertex ordinal
+  std::vector<bool> m_disjoint;                             // by cut vertex
+  std::vector<std::size_t> m_edge_of;                       // by cut edge
+  std::vector<typename Cut::Halfedge_index> m_cut_halfedge; // by halfedge ordinal (corners only)
+  Cut m_cut;
+};
+
+/// whether `mode` keeps cut vertex v of `topology` where it is (infinitely sharp)
+template <class Mesh>
+bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mesh>& topology,
+                typename Face_varying_cut_mesh::Vertex_index v)
+{
+  const Face_varying_cut_mesh& cut = topology.cut();
+  if(topology.is_disjoint(v))
+    return true;
+  const bool on_border = bool(CGAL::is_border(v, cut));
+  if(!on_border)
+    return false;
+  int faces = 0;
+  for(auto h : CGAL::halfedges_around_target(v, cut))
+    faces += CGAL::is_border(h, cut) ? 0 : 1;
+  const bool corner = faces == 1;
+  switch(mode) {
+    case Face_varying_interpolation::none:
+      return false;
+    case Face_varying_interpolation::corners_only:
+      return corner;
+    case Face_varying_interpolation::corners_plus1:
+      return corner || topology.values_at_vertex(v) > 2;
+    case Face_varying_interpolation::corners_plus2: // a dart: the one value of an inner vertex, on a seam
+      return corner || topology.values_at_vertex(v) > 2 ||
+             (topology.values_at_vertex(v) == 1 && !topology.is_on_mesh_border(v));
+    default: // boundaries, all
+      return true;
+  }
+}
+
+/*
+ * The rows of one level of a corner map whose values agree as `same` says,
+ * refined by `mask` (a tagged mask: the sharpness of `mesh`'s level, which
+ * the cut mesh takes, seams being borders) in `mode`.
+ */
+template <class Mesh, class FT, class Mask>
+Face_varying_rows<Mesh, FT> face_varying_rows(
+  const Mesh& mesh, const Mask& mask, Face_varying_interpolation mode,
+  const std::function<bool(typename boost::graph_traits<Mesh>::halfedge_descriptor,
+                           typename boost::graph_traits<Mesh>::halfedge_descriptor)>& same)
+{
+  using Cut = Face_varying_cut_mesh;
+  using Level = Sharp_level<Cut, FT>;
+  using S = typename Level::S;
+  const Face_varying_topology<Mesh> topology(mesh, same);
+  const Mesh_numbering<Mesh>& number = topology.numbering();
+  const Cut& cut = topology.cut();
+
+  // the sharpness of the mesh's level: the mask's tags, or none but the pinned corners
+  const Sharp_level<Mesh, FT>* tags = mask.sharp_level();
+  std::unique_ptr<Sharp_level<Mesh, FT>> untagged;
+  if(tags == nullptr) {
+    untagged = std::make_unique<Sharp_level<Mesh, FT>>(
+      mesh, [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, border_corners_of(mask));
+    tags = untagged.get();
+  }
+  const Level cut_level(
+    cut, [&](typename Cut::Edge_index e) { return tags->edge_sharpness(topology.edge_of(e)); },
+    [&](typename Cut::Vertex_index v) {
+      return is_kept_by(mode, topology, v) ? Level::Rules::infinite()
+                                           : S(tags->vertex_sharpness(topology.vertex_of(v)));
+    },
+    tags->method(), Border_corners::smooth);
+  const auto cut_mask = mask.template rebind<Cut, FT>().with_sharp_level(&cut_level);
+
+  Face_varying_rows<Mesh, FT> result;
+  const auto host = make_host(cut, cut_mask);
+  Stencil_recorder<Cut, FT> recorder;
+  recorder.read(host, cut_mask, Parallel_loop(1));
+  result.rows = std::move(recorder.rows);
+  for(std::size_t v = 0; v < cut.number_of_vertices(); ++v)
+    result.corner_of_value.push_back(topology.corner_of(typename Cut::Vertex_index(static_cast<Cut::size_type>(v))));
+
+  // the new vertex of every old element of the cut mesh
+  const std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> row_of_vertex(cut.number_of_vertices(), none), row_of_edge(cut.number_of_edges(), none),
+    row_of_face(cut.number_of_faces(), none);
+  for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j) {
+    const Vertex_origin origin = host.origin(j);
+    (origin.kind == Origin_kind::vertex ? row_of_vertex
+     : origin.kind == Origin_kind::edge ? row_of_edge
+                                        : row_of_face)[origin.index] = j;
+  }
+  const Mesh_numbering<Cut> cut_number(cut);
+  using Entry = typename Face_varying_rows<Mesh, FT>::Entry;
+  for(auto f : faces(mesh)) {
+    const std::size_t face = number(f);
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      result.entries.push_back(
+        Entry{Origin_kind::vertex, number(target(h, mesh)), row_of_vertex[topology.value_at(h)]});
+      result.entries.push_back(
+        Entry{Origin_kind::edge, number(h) >> 1, row_of_edge[cut_number(cut.edge(topology.cut_halfedge(h)))]});
+    }
+    if(row_of_face[face] != none)
+      result.entries.push_back(Entry{Origin_kind::face, face, row_of_face[face]});
+    result.face_starts.push_back(result.entries.size());
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_REFINEMENT_FACE_VARYING_H
