@@ -823,6 +823,32 @@ private:
     unsigned long long index;
   };
 
+  /// The forward references of the faces, in the order of the file, kept only
+  /// when larger than every one before: a face whose index is not would never
+  /// be the first out of range, an earlier face being so too. Many faces
+  /// referring forward then take memory only if their indices keep growing.
+  class Forward_references
+  {
+  public:
+    void add(std::size_t face, std::size_t line, unsigned long long index)
+    {
+      if(m_kept.empty() || index > m_kept.back().index)
+        m_kept.push_back(Forward_reference{face, line, index});
+    }
+
+    /// the first reference past `count`, or nullptr
+    const Forward_reference* first_past(std::size_t count) const
+    {
+      for(const Forward_reference& reference : m_kept)
+        if(reference.index > count)
+          return &reference;
+      return nullptr;
+    }
+
+  private:
+    std::vector<Forward_reference> m_kept; // indices increasing
+  };
+
   /// the lines of a statement that the soup does not keep
   struct Ignored
   {
@@ -875,7 +901,7 @@ private:
     if(corners < 3)
       m_text.fail(too_few_vertices(face, std::to_string(corners)));
     if(forward != 0)
-      m_forward.push_back(Forward_reference{face, m_text.line(), forward});
+      m_forward.add(face, m_text.line(), forward);
     end_face(m_soup);
   }
 
@@ -1055,17 +1081,16 @@ private:
 
   void check_forward_references() const
   {
-    for(const Forward_reference& reference : m_forward)
-      if(reference.index > m_soup.points.size())
-        m_text.fail_at_line(reference.line, index_out_of_range(reference.face, std::to_string(reference.index),
-                                                               m_soup.points.size(), true));
+    if(const Forward_reference* reference = m_forward.first_past(m_soup.points.size()))
+      m_text.fail_at_line(reference->line, index_out_of_range(reference->face, std::to_string(reference->index),
+                                                              m_soup.points.size(), true));
   }
 
   const char* m_data;
   std::size_t m_size;
   Text_cursor m_text;
   Mesh_soup m_soup;
-  std::vector<Forward_reference> m_forward;
+  Forward_references m_forward;
   std::vector<Ignored> m_ignored;
   std::size_t m_other_ignored_lines = 0;
   std::size_t m_extra_vertex_values_line = 0;
