@@ -131,6 +131,7 @@ std::vector<std::size_t> face(const Mesh_soup& soup, std::size_t f)
 
 using Point = std::array<double, 3>;
 using Face = std::vector<std::size_t>;
+using Uv = std::array<double, 2>;
 
 /// what every soup the reader returns satisfies (empty if it does)
 std::string broken_invariant(const Mesh_soup& soup)
@@ -147,6 +148,15 @@ std::string broken_invariant(const Mesh_soup& soup)
     for(double c : p)
       if(!std::isfinite(c))
         return "a coordinate is not finite";
+  if(!soup.texture_indices.empty() && soup.texture_indices.size() != soup.indices.size())
+    return "texture_indices and indices differ in size";
+  for(std::size_t index : soup.texture_indices)
+    if(index >= soup.texture_points.size())
+      return "texture index " + std::to_string(index) + " out of range";
+  for(const Uv& uv : soup.texture_points)
+    for(double c : uv)
+      if(!std::isfinite(c))
+        return "a texture coordinate is not finite";
   return "";
 }
 
@@ -265,6 +275,36 @@ const std::string cube_obj =
   "t crease 2/1/0 0 1 2.5\n"
   "t interpolateboundary 1/0/0 1\n"
   "t creasemethod 0/0/1 chaikin\n";
+
+// the unit cube of cube_obj, its four sides unrolled into a strip: the side
+// faces (front, right, back, left) go from u = 0 to u = 1, and the vertical
+// edge of vertices 1 and 5 is a seam (u = 0 in the front, u = 1 in the left
+// face); the bottom and top faces reuse the front face's square
+const std::string seam_cube_obj =
+  "v 0 0 0\n"
+  "v 1 0 0\n"
+  "v 1 1 0\n"
+  "v 0 1 0\n"
+  "v 0 0 1\n"
+  "v 1 0 1\n"
+  "v 1 1 1\n"
+  "v 0 1 1\n"
+  "vt 0 0\n"
+  "vt 0.25 0\n"
+  "vt 0.5 0\n"
+  "vt 0.75 0\n"
+  "vt 1 0\n"
+  "vt 0 1\n"
+  "vt 0.25 1\n"
+  "vt 0.5 1\n"
+  "vt 0.75 1\n"
+  "vt 1 1\n"
+  "f 1/1 2/2 6/7 5/6\n"
+  "f 2/2 3/3 7/8 6/7\n"
+  "f 3/3 4/4 8/9 7/8\n"
+  "f 4/4 1/5 5/10 8/9 # the seam\n"
+  "f 1/1 4/6 3/7 2/2\n"
+  "f 5/1 6/2 7/7 8/6\n";
 
 const std::string tetra_ply =
   "ply\n"
@@ -669,10 +709,13 @@ TEST(MeshSoupObj, ReadsACubeWithEveryFaceForm)
   EXPECT_EQ(face(soup, 3), (Face{1, 2, 6, 5}));
   EXPECT_EQ(face(soup, 4), (Face{3, 7, 6, 2})); // -5 -1 -2 -6 with 8 vertices
   EXPECT_EQ(face(soup, 5), (Face{3, 0, 4, 7}));
-  EXPECT_EQ(soup.notes,
-            (std::vector<std::string>{
-              "ignored 1 material library (mtllib) of 'a.obj'", "ignored 2 texture coordinates (vt) of 'a.obj'",
-              "ignored 1 normal (vn) of 'a.obj'", "ignored 1 material assignment (usemtl) of 'a.obj'"}));
+  // face 0 (f 1 4 3 2) has no vt, face 1 (f 5/1 6/2 7/1 8/2) has
+  EXPECT_EQ(soup.texture_points, (std::vector<Uv>{{0, 0}, {1, 0}}));
+  EXPECT_TRUE(soup.texture_indices.empty());
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{
+                          "ignored the texture coordinates (vt) of 'a.obj': face 0 has none, but face 1 has",
+                          "ignored 1 material library (mtllib) of 'a.obj'", "ignored 1 normal (vn) of 'a.obj'",
+                          "ignored 1 material assignment (usemtl) of 'a.obj'"}));
 }
 
 TEST(MeshSoupObj, KeepsTheTags)
@@ -781,6 +824,206 @@ TEST(MeshSoupObj, RefusesLineContinuations)
             "'a.obj' line 2: the line ends with '\\' (line continuations are not supported)");
   // in a comment, a backslash is only text
   EXPECT_EQ(parse_obj("v 0 0 0 # \\\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").number_of_faces(), 1u);
+}
+
+TEST(MeshSoupObj, ReadsTheTextureCoordinatesOfACubeWithASeam)
+{
+  const Mesh_soup soup = parse_obj(seam_cube_obj);
+  ASSERT_EQ(soup.points.size(), 8u);
+  ASSERT_EQ(soup.number_of_faces(), 6u);
+  EXPECT_EQ(face(soup, 3), (Face{3, 0, 4, 7}));
+  EXPECT_EQ(
+    soup.texture_points,
+    (std::vector<Uv>{{0, 0}, {0.25, 0}, {0.5, 0}, {0.75, 0}, {1, 0}, {0, 1}, {0.25, 1}, {0.5, 1}, {0.75, 1}, {1, 1}}));
+  EXPECT_EQ(soup.texture_indices,
+            (std::vector<std::size_t>{0, 1, 6, 5, 1, 2, 7, 6, 2, 3, 8, 7, 3, 4, 9, 8, 0, 5, 6, 1, 0, 1, 6, 5}));
+  // the seam: vertex 0 has u = 0 in face 0 and u = 1 in face 3
+  EXPECT_EQ(soup.texture_points[soup.texture_indices[0]], (Uv{0, 0}));
+  EXPECT_EQ(soup.texture_points[soup.texture_indices[13]], (Uv{1, 0}));
+  EXPECT_TRUE(soup.notes.empty());
+  EXPECT_EQ(broken_invariant(soup), "");
+}
+
+TEST(MeshSoupObj, ReadsTextureCoordinatesWithNormals)
+{
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
+  const Mesh_soup soup = parse_obj(triangle + "f 1/1/1 2/2/1 3/3/1\nf 3/3/ 2/2/ 1/1/\n");
+  EXPECT_EQ(soup.indices, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
+  EXPECT_EQ(soup.texture_indices, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored 1 normal (vn) of 'a.obj'"}));
+  // v//vn and v/ give no texture coordinate
+  const Mesh_soup without = parse_obj(triangle + "f 1//1 2//1 3//1\nf 3/ 2/ 1/\n");
+  EXPECT_TRUE(without.texture_indices.empty());
+  EXPECT_EQ(without.notes, (std::vector<std::string>{"no face refers to the 3 texture coordinates (vt) of 'a.obj'",
+                                                     "ignored 1 normal (vn) of 'a.obj'"}));
+}
+
+TEST(MeshSoupObj, NegativeTextureIndicesCountBackFromTheLastRead)
+{
+  const Mesh_soup soup = parse_obj(
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nf 1/-3 2/-2 3/-1\n"
+    "vt 0 1\nf 1/-4 -2/-2 -1/-1\nf 1/1 3/3 4/-1\n");
+  EXPECT_EQ(soup.indices, (std::vector<std::size_t>{0, 1, 2, 0, 2, 3, 0, 2, 3}));
+  EXPECT_EQ(soup.texture_indices, (std::vector<std::size_t>{0, 1, 2, 0, 2, 3, 0, 2, 3}));
+  EXPECT_TRUE(soup.notes.empty());
+}
+
+TEST(MeshSoupObj, ForwardTextureReferences)
+{
+  // the vt lines (and the v lines) may follow the faces that use them
+  const Mesh_soup soup = parse_obj("f 1/3 2/2 3/1\nvt 0 0\nv 0 0 0\nf 3/2 2/3 1/1\nvt 1 0\nvt 0 1\nv 1 0 0\nv 0 1 0\n");
+  EXPECT_EQ(soup.indices, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
+  EXPECT_EQ(soup.texture_indices, (std::vector<std::size_t>{2, 1, 0, 1, 2, 0}));
+  EXPECT_EQ(soup.texture_points, (std::vector<Uv>{{0, 0}, {1, 0}, {0, 1}}));
+}
+
+TEST(MeshSoupObj, TextureCoordinatesWithOneOrThreeValues)
+{
+  const Mesh_soup soup = parse_obj(
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 0.25 0.75 0.125\nvt -1e-3 +2 # a comment\nvt 1e-400 -0\n"
+    "f 1/1 2/2 3/3\nf 1/4 2/4 3/4\n");
+  EXPECT_EQ(soup.texture_points, (std::vector<Uv>{{0.5, 0}, {0.25, 0.75}, {-1e-3, 2}, {0, 0}}));
+  EXPECT_EQ(soup.texture_indices, (std::vector<std::size_t>{0, 1, 2, 3, 3, 3}));
+  EXPECT_TRUE(soup.notes.empty());
+}
+
+TEST(MeshSoupObj, NotesTextureCoordinatesThatNotEveryFaceUses)
+{
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n";
+  const Mesh_soup later = parse_obj(square + "f 1 2 3\nf 1/1 3/1 4/1\nf 1 3 4\n");
+  EXPECT_EQ(later.number_of_faces(), 3u);
+  EXPECT_EQ(later.texture_points.size(), 1u);
+  EXPECT_TRUE(later.texture_indices.empty());
+  EXPECT_EQ(
+    later.notes,
+    (std::vector<std::string>{"ignored the texture coordinates (vt) of 'a.obj': face 0 has none, but face 1 has"}));
+  const Mesh_soup first = parse_obj(square + "f 1/1 2/1 3/1\nf 1/1 3/1 4/1\nf 1 2 4\nf 2 3 4\nf 1/1 2/1 4/1\n");
+  EXPECT_TRUE(first.texture_indices.empty());
+  EXPECT_EQ(first.notes, (std::vector<std::string>{
+                           "ignored the texture coordinates (vt) of 'a.obj': face 0 has them, but face 2 has none"}));
+  const Mesh_soup unused = parse_obj(square + "vt 1 1\nf 1 2 3\n");
+  EXPECT_EQ(unused.texture_points, (std::vector<Uv>{{0, 0}, {1, 1}}));
+  EXPECT_TRUE(unused.texture_indices.empty());
+  EXPECT_EQ(unused.notes, (std::vector<std::string>{"no face refers to the 2 texture coordinates (vt) of 'a.obj'"}));
+  EXPECT_EQ(parse_obj("vt 0 0\n").notes,
+            (std::vector<std::string>{"no face refers to the 1 texture coordinate (vt) of 'a.obj'"}));
+  EXPECT_TRUE(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").notes.empty());
+}
+
+TEST(MeshSoupObj, RefusesBadTextureCoordinates)
+{
+  EXPECT_EQ(obj_refusal("vt\n"), "'a.obj' line 1: texture coordinate 1 has no value (expected u, u v or u v w)");
+  EXPECT_EQ(obj_refusal("vt 0 0\nvt # none\n"),
+            "'a.obj' line 2: texture coordinate 2 has no value (expected u, u v or u v w)");
+  EXPECT_EQ(obj_refusal("vt 0 0\nvt 0 0 0 0\n"),
+            "'a.obj' line 2: texture coordinate 2 has 4 values (expected u, u v or u v w)");
+  EXPECT_EQ(obj_refusal("vt 0 0 0 0 x y\n"),
+            "'a.obj' line 1: texture coordinate 1 has 6 values (expected u, u v or u v w)");
+  EXPECT_EQ(obj_refusal("vt 0 x\n"), "'a.obj' line 1: texture coordinate 1: expected a number, found 'x'");
+  EXPECT_EQ(obj_refusal("vt 0,5 0\n"), "'a.obj' line 1: texture coordinate 1: expected a number, found '0,5'");
+  EXPECT_EQ(obj_refusal("vt nan\n"),
+            "'a.obj' line 1: texture coordinate 1 has the value nan, which is not a finite number");
+  EXPECT_EQ(obj_refusal("vt 0 1e400\n"),
+            "'a.obj' line 1: texture coordinate 1 has the value 1e400, which is not a finite number");
+  EXPECT_EQ(obj_refusal("vt 0 0 -inf\n"),
+            "'a.obj' line 1: texture coordinate 1 has the value -inf, which is not a finite number");
+}
+
+TEST(MeshSoupObj, RefusesBadTextureIndices)
+{
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  const std::string uvs = square + "vt 0 0\nvt 1 0\nvt 1 1\n"; // 7 lines
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/3\nf 1/0 2/1 3/1\n"),
+            "'a.obj' line 9: face 1 has texture coordinate index 0 (OBJ counts texture coordinates from 1, or from -1 "
+            "backwards)");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/4\nf 1/1 2/2 3/9\n"),
+            "'a.obj' line 8: face 0 has texture coordinate index 4, but the file has 3 texture coordinates (1 to 3)");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/3\nf 1/1 2/2 3/9\nf 1/1 2/2 3/4\n"),
+            "'a.obj' line 9: face 1 has texture coordinate index 9, but the file has 3 texture coordinates (1 to 3)");
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2/1 3/1\n"),
+            "'a.obj' line 5: face 0 has texture coordinate index 1, but the file has no texture coordinates");
+  EXPECT_EQ(obj_refusal(square + "vt 0 0\nf 1/1 2/2 3/1\n"),
+            "'a.obj' line 6: face 0 has texture coordinate index 2, but the file has 1 texture coordinate (1 to 1)");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/-1 2/-2 3/-4\n"),
+            "'a.obj' line 8: face 0 has texture coordinate index -4, but only 3 texture coordinates precede it (-1 to "
+            "-3)");
+  EXPECT_EQ(obj_refusal(square + "vt 0 0\nf 1/-1 2/-1 3/-2\n"),
+            "'a.obj' line 6: face 0 has texture coordinate index -2, but only 1 texture coordinate precedes it (-1 to "
+            "-1)");
+  EXPECT_EQ(obj_refusal(square + "f 1/-1 2/-1 3/-1\nvt 0 0\n"),
+            "'a.obj' line 5: face 0 has texture coordinate index -1, but no texture coordinate precedes it");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/-99999999999999999999\n"),
+            "'a.obj' line 8: face 0 has texture coordinate index -99999999999999999999, but only 3 texture "
+            "coordinates precede it (-1 to -3)");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/99999999999\n"),
+            "'a.obj' line 8: face 0 has texture coordinate index 99999999999, but a mesh has at most 4294967295 "
+            "texture coordinates");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/99999999999999999999/1\n"),
+            "'a.obj' line 8: face 0 has texture coordinate index 99999999999999999999, but a mesh has at most "
+            "4294967295 texture coordinates");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/1.5\n"),
+            "'a.obj' line 8: face 0: '3/1.5' is not a vertex reference (expected v, v/vt, v//vn or v/vt/vn)");
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 3/1/x\n"),
+            "'a.obj' line 8: face 0: '3/1/x' is not a vertex reference (expected v, v/vt, v//vn or v/vt/vn)");
+  // the vertex of a corner is checked first
+  EXPECT_EQ(obj_refusal(uvs + "f 1/1 2/2 0/0\n"),
+            "'a.obj' line 8: face 0 has vertex index 0 (OBJ counts vertices from 1, or from -1 backwards)");
+  // the texture indices are checked even when the soup cannot keep them
+  EXPECT_EQ(obj_refusal(square + "vt 0 0\nf 1 2 3\nf 1/5 2/5 3/5\n"),
+            "'a.obj' line 7: face 1 has texture coordinate index 5, but the file has 1 texture coordinate (1 to 1)");
+  EXPECT_EQ(obj_refusal(square + "vt 0 0\nf 1 2 3\nf 1/1 2/1 3/-2\n"),
+            "'a.obj' line 7: face 1 has texture coordinate index -2, but only 1 texture coordinate precedes it (-1 to "
+            "-1)");
+}
+
+TEST(MeshSoupObj, RefusesTheFirstForwardReferencePastTheEnd)
+{
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n";
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2/1 3/2\nf 1/1 2/1 9/1\n"),
+            "'a.obj' line 6: face 0 has texture coordinate index 2, but the file has 1 texture coordinate (1 to 1)");
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2/1 9/1\nf 1/1 2/1 3/2\n"),
+            "'a.obj' line 6: face 0 has vertex index 9, but the file has 4 vertices (1 to 4)");
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2/1 9/2\n"),
+            "'a.obj' line 6: face 0 has vertex index 9, but the file has 4 vertices (1 to 4)");
+  EXPECT_EQ(obj_refusal(square + "f 1 2 5\nf 1 2 9\nf 1 2 6\n"),
+            "'a.obj' line 6: face 0 has vertex index 5, but the file has 4 vertices (1 to 4)");
+}
+
+// The texture data grows with the file, a few bytes per byte: the largest
+// allocation, that of a vector grown to twice its size, stays below 8 times
+// the file even in the shortest lines that make it grow.
+TEST(MeshSoupObj, TextureDataStaysAFewTimesTheFileSize)
+{
+  const int lines = 100000;
+  std::string faces = "v 0 0 0\nvt 0\n", points, forward = "v 0 0 0\n";
+  for(int i = 0; i < lines; ++i) {
+    faces += "f 1/1 1/1 1/1\n";
+    points += "vt 0\n";
+    const std::string index = std::to_string(i + 1);
+    forward += "f 1/" + index + " 1/" + index + " 1/" + index + "\n";
+  }
+  largest_allocation = 0;
+  EXPECT_EQ(parse_obj(faces).texture_indices.size(), 3u * lines);
+  EXPECT_LT(largest_allocation.load(), 8 * faces.size());
+  largest_allocation = 0;
+  EXPECT_EQ(parse_obj(points).texture_points.size(), std::size_t(lines));
+  EXPECT_LT(largest_allocation.load(), 8 * points.size());
+  largest_allocation = 0;
+  EXPECT_EQ(obj_refusal(forward),
+            "'a.obj' line 2: face 0 has texture coordinate index 1, but the file has no "
+            "texture coordinates");
+  EXPECT_LT(largest_allocation.load(), 8 * forward.size());
+}
+
+TEST(MeshSoupObj, RefusesFacesWithAndWithoutTextureCoordinates)
+{
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n";
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2 3/1\n"),
+            "'a.obj' line 6: face 0: corner '2' has no texture coordinate (vt), but corner '1/1' has one");
+  EXPECT_EQ(obj_refusal(square + "f 1 2/ 3/1\n"),
+            "'a.obj' line 6: face 0: corner '1' has no texture coordinate (vt), but corner '3/1' has one");
+  EXPECT_EQ(obj_refusal(square + "f 1/1 2/1 3/1\nf 1//1 3/1/1 4/1/1\n"),
+            "'a.obj' line 7: face 1: corner '1//1' has no texture coordinate (vt), but corner '3/1/1' has one");
 }
 
 // ---------------------------------------------------------------------------
@@ -1246,6 +1489,7 @@ std::vector<Sample> samples()
           {"binary OFF", binary_off(), Mesh_format::off},
           {"binary COFF", binary_off("COFF"), Mesh_format::off},
           {"OBJ", cube_obj, Mesh_format::obj},
+          {"OBJ with a UV seam", seam_cube_obj, Mesh_format::obj},
           {"ASCII PLY", tetra_ply, Mesh_format::ply},
           {"binary PLY (little endian)", binary_ply(false), Mesh_format::ply},
           {"binary PLY (big endian)", binary_ply(true), Mesh_format::ply},
@@ -1327,7 +1571,7 @@ TEST(MeshSoupHostile, RandomByteFlipsParseOrAreRefused)
       ++(accepted ? parsed : refused);
     }
   }
-  EXPECT_EQ(parsed + refused, 30000u);
+  EXPECT_EQ(parsed + refused, 33000u);
   EXPECT_GT(parsed, 1000u); // changed coordinates, comments, names: still valid
   EXPECT_GT(refused, 1000u);
 }

@@ -97,14 +97,23 @@ std::string too_few_vertices(std::size_t face, const std::string& count)
          " (a face needs at least 3)";
 }
 
-/// `index` as the file wrote it; `vertices` counted as the file does, from 0 or 1
-std::string index_out_of_range(std::size_t face, const std::string& index, std::size_t vertices, bool from_one)
+/// what the index of a face corner refers to, as the messages name it
+struct Index_kind
+{
+  const char *one, *many;
+};
+const Index_kind vertex_kind{"vertex", "vertices"};
+const Index_kind texture_kind{"texture coordinate", "texture coordinates"}; // OBJ's vt
+
+/// `index` as the file wrote it; `count` counted as the file does, from 0 or 1
+std::string index_out_of_range(std::size_t face, const std::string& index, std::size_t count, bool from_one,
+                               const Index_kind& kind = vertex_kind)
 {
   const std::string range =
-    vertices == 0 ? std::string("no vertices")
-                  : count_of(vertices, "vertex", "vertices") + " (" +
-                      (from_one ? "1 to " + std::to_string(vertices) : "0 to " + std::to_string(vertices - 1)) + ")";
-  return "face " + std::to_string(face) + " has vertex index " + index + ", but the file has " + range;
+    count == 0 ? "no " + std::string(kind.many)
+               : count_of(count, kind.one, kind.many) + " (" +
+                   (from_one ? "1 to " + std::to_string(count) : "0 to " + std::to_string(count - 1)) + ")";
+  return "face " + std::to_string(face) + " has " + kind.one + " index " + index + ", but the file has " + range;
 }
 
 std::string count_too_large(const std::string& counts, std::size_t bytes_left)
@@ -815,12 +824,39 @@ private:
     return count;
   }
 
-  /// a face that refers to a vertex defined after it (positive index): the
-  /// largest such index, checked against the vertex count at the end
+  /// a face that refers to a vertex (or a texture coordinate) defined after it
+  /// (positive index): the largest such index, checked against the count at
+  /// the end
   struct Forward_reference
   {
     std::size_t face, line;
     unsigned long long index;
+  };
+
+  /// The forward references of the faces, in the order of the file, kept only
+  /// when larger than every one before: a face whose index is not would never
+  /// be the first out of range, an earlier face being so too. Many faces
+  /// referring forward then take memory only if their indices keep growing.
+  class Forward_references
+  {
+  public:
+    void add(std::size_t face, std::size_t line, unsigned long long index)
+    {
+      if(m_kept.empty() || index > m_kept.back().index)
+        m_kept.push_back(Forward_reference{face, line, index});
+    }
+
+    /// the first reference past `count`, or nullptr
+    const Forward_reference* first_past(std::size_t count) const
+    {
+      for(const Forward_reference& reference : m_kept)
+        if(reference.index > count)
+          return &reference;
+      return nullptr;
+    }
+
+  private:
+    std::vector<Forward_reference> m_kept; // indices increasing
   };
 
   /// the lines of a statement that the soup does not keep
@@ -841,6 +877,8 @@ private:
   {
     if(keyword == "v")
       read_vertex();
+    else if(keyword == "vt")
+      read_texture_point();
     else if(keyword == "f")
       read_face();
     else if(keyword == "t")
@@ -860,75 +898,151 @@ private:
     m_soup.points.push_back(read_point_on_line(m_text, number, m_extra_vertex_values_line));
   }
 
+  /// `vt u [v [w]]`: v is 0 if missing, w (a depth, for 3D textures) is dropped
+  void read_texture_point()
+  {
+    const std::size_t number = m_soup.texture_points.size() + 1;
+    if(m_soup.texture_points.size() == max_vertices)
+      m_text.fail("more than " + std::to_string(max_vertices) +
+                  " texture coordinates (vt) are not supported (the meshes use 32-bit indices)");
+    std::array<double, 2> uv{};
+    std::size_t values = 0;
+    for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line(), ++values) {
+      if(values == 3)
+        m_text.fail(numbered("texture coordinate", number) + " has " +
+                    std::to_string(4 + m_text.tokens_left_on_line()) + " values (expected u, u v or u v w)");
+      double value = 0;
+      if(!parse_real(token, value))
+        m_text.fail(numbered("texture coordinate", number) + ": expected a number, found " + shown(token));
+      if(!std::isfinite(value))
+        m_text.fail(numbered("texture coordinate", number) + " has the value " + clipped(token) +
+                    ", which is not a finite number");
+      if(values < 2)
+        uv[values] = value;
+    }
+    if(values == 0)
+      m_text.fail(numbered("texture coordinate", number) + " has no value (expected u, u v or u v w)");
+    m_soup.texture_points.push_back(uv);
+  }
+
+  /// a face corner: its vertex and its texture coordinate (0: none), from 1
+  struct Corner
+  {
+    unsigned long long vertex, texture;
+  };
+
+  /// A face: its corners all have a texture coordinate, or none has. The
+  /// texture indices are pushed with the vertex indices, as long as every
+  /// face has them: never more of them than of those.
   void read_face()
   {
     const std::size_t face = m_soup.number_of_faces();
+    const bool keep_texture = m_texture_mismatch == 0 && (face == 0 || m_faces_textured);
     std::size_t corners = 0;
-    unsigned long long forward = 0; // the largest index past the vertices so far
+    std::string_view first_corner;
+    bool textured = false;
+    // the largest indices past the vertices and the texture coordinates so far
+    unsigned long long forward = 0, texture_forward = 0;
     for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line()) {
-      const unsigned long long index = vertex_of(token, face);
-      if(index > m_soup.points.size() && index > forward)
-        forward = index;
-      m_soup.indices.push_back(static_cast<std::size_t>(index - 1));
+      const Corner corner = corner_of(token, face);
+      if(corners == 0) {
+        first_corner = token;
+        textured = corner.texture != 0;
+      } else if((corner.texture != 0) != textured) {
+        m_text.fail("face " + std::to_string(face) + ": corner " + shown(textured ? token : first_corner) +
+                    " has no texture coordinate (vt), but corner " + shown(textured ? first_corner : token) +
+                    " has one");
+      }
+      if(corner.vertex > m_soup.points.size() && corner.vertex > forward)
+        forward = corner.vertex;
+      if(corner.texture > m_soup.texture_points.size() && corner.texture > texture_forward)
+        texture_forward = corner.texture;
+      m_soup.indices.push_back(static_cast<std::size_t>(corner.vertex - 1));
+      if(textured && keep_texture)
+        m_soup.texture_indices.push_back(static_cast<std::size_t>(corner.texture - 1));
       ++corners;
     }
     if(corners < 3)
       m_text.fail(too_few_vertices(face, std::to_string(corners)));
     if(forward != 0)
-      m_forward.push_back(Forward_reference{face, m_text.line(), forward});
+      m_forward.add(face, m_text.line(), forward);
+    if(texture_forward != 0)
+      m_texture_forward.add(face, m_text.line(), texture_forward);
+    compare_texture_use(face, textured);
     end_face(m_soup);
   }
 
-  /// the vertex of a face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`, from 1
-  unsigned long long vertex_of(std::string_view corner, std::size_t face)
+  /// the soup keeps the texture indices only if every face has them: the
+  /// first face that differs from face 0 drops them
+  void compare_texture_use(std::size_t face, bool textured)
   {
-    const std::size_t slash = corner.find('/');
-    const std::string_view vertex_text = corner.substr(0, slash);
-    long long index = 0;
-    const Integer status = parse_integer(vertex_text, index);
-    if(status == Integer::invalid || !references_are_integers(corner, slash))
+    if(face == 0) {
+      m_faces_textured = textured;
+    } else if(textured != m_faces_textured && m_texture_mismatch == 0) {
+      m_texture_mismatch = face;
+      std::vector<std::size_t>().swap(m_soup.texture_indices);
+    }
+  }
+
+  /// the corner `v`, `v/vt`, `v//vn` or `v/vt/vn` (an empty vt or vn is none);
+  /// the normal is only checked to be an integer
+  Corner corner_of(std::string_view corner, std::size_t face)
+  {
+    std::string_view parts[3];
+    long long vertex = 0, texture = 0, normal = 0;
+    if(!split_corner(corner, parts) || parse_integer(parts[0], vertex) == Integer::invalid ||
+       (!parts[1].empty() && parse_integer(parts[1], texture) == Integer::invalid) ||
+       (!parts[2].empty() && parse_integer(parts[2], normal) != Integer::ok))
       m_text.fail("face " + std::to_string(face) + ": " + shown(corner) +
                   " is not a vertex reference (expected v, v/vt, v//vn or v/vt/vn)");
+    Corner result{index_from(vertex, parts[0], face, m_soup.points.size(), vertex_kind), 0};
+    if(!parts[1].empty())
+      result.texture = index_from(texture, parts[1], face, m_soup.texture_points.size(), texture_kind);
+    return result;
+  }
+
+  /// `parts` = v, vt, vn of `corner` (the missing ones empty); false if it
+  /// has a fourth part
+  static bool split_corner(std::string_view corner, std::string_view (&parts)[3])
+  {
+    for(std::string_view& part : parts) {
+      const std::size_t slash = corner.find('/');
+      part = corner.substr(0, slash);
+      if(slash == std::string_view::npos)
+        return true;
+      corner.remove_prefix(slash + 1);
+    }
+    return false;
+  }
+
+  /// `index`, written `text` in the file, from 1 whether it counts from the
+  /// first (1) or from the last (-1) of the `so_far` vertices or texture
+  /// coordinates read so far; a larger one is a forward reference
+  unsigned long long index_from(long long index, std::string_view text, std::size_t face, std::size_t so_far,
+                                const Index_kind& kind)
+  {
     if(index == 0)
-      m_text.fail("face " + std::to_string(face) +
-                  " has vertex index 0 (OBJ counts vertices from 1, or from -1 backwards)");
+      m_text.fail("face " + std::to_string(face) + " has " + kind.one + " index 0 (OBJ counts " + kind.many +
+                  " from 1, or from -1 backwards)");
     if(index < 0)
-      return relative_vertex(index, vertex_text, face);
+      return relative_index(index, text, face, so_far, kind);
     if(static_cast<unsigned long long>(index) > max_vertices)
-      m_text.fail("face " + std::to_string(face) + " has vertex index " + clipped(vertex_text) +
-                  ", but a mesh has at most " + std::to_string(max_vertices) + " vertices");
+      m_text.fail("face " + std::to_string(face) + " has " + kind.one + " index " + clipped(text) +
+                  ", but a mesh has at most " + std::to_string(max_vertices) + " " + kind.many);
     return static_cast<unsigned long long>(index);
   }
 
-  /// the texture and normal parts of a corner (after `slash`): empty or integers
-  static bool references_are_integers(std::string_view corner, std::size_t slash)
-  {
-    if(slash == std::string_view::npos)
-      return true;
-    std::string_view rest = corner.substr(slash + 1);
-    for(int part = 0; part < 2; ++part) {
-      const std::size_t next = rest.find('/');
-      const std::string_view text = rest.substr(0, next);
-      long long ignored = 0;
-      if(!text.empty() && parse_integer(text, ignored) != Integer::ok)
-        return false;
-      if(next == std::string_view::npos)
-        return true;
-      rest = rest.substr(next + 1);
-    }
-    return false; // a fourth part
-  }
-
-  /// -1 is the last vertex read so far
-  unsigned long long relative_vertex(long long index, std::string_view vertex_text, std::size_t face)
+  /// -1 is the last of the `so_far` read
+  unsigned long long relative_index(long long index, std::string_view text, std::size_t face, std::size_t so_far,
+                                    const Index_kind& kind)
   {
     const unsigned long long back = static_cast<unsigned long long>(-(index + 1)) + 1;
-    const std::size_t so_far = m_soup.points.size();
     if(back > so_far)
-      m_text.fail("face " + std::to_string(face) + " has vertex index " + clipped(vertex_text) + ", but " +
-                  (so_far == 0 ? std::string("no vertex precedes it")
-                               : "only " + count_of(so_far, "vertex precedes", "vertices precede") + " it (-1 to -" +
-                                   std::to_string(so_far) + ")"));
+      m_text.fail("face " + std::to_string(face) + " has " + kind.one + " index " + clipped(text) + ", but " +
+                  (so_far == 0
+                     ? "no " + std::string(kind.one) + " precedes it"
+                     : "only " + count_of(so_far, kind.one, kind.many) + (so_far == 1 ? " precedes" : " precede") +
+                         " it (-1 to -" + std::to_string(so_far) + ")"));
     return so_far - back + 1;
   }
 
@@ -1017,6 +1131,14 @@ private:
     if(m_extra_vertex_values_line != 0)
       m_soup.notes.push_back("ignored the values after x y z (w, colours) of the vertices" + of + " (from line " +
                              std::to_string(m_extra_vertex_values_line) + ")");
+    if(m_texture_mismatch != 0)
+      m_soup.notes.push_back("ignored the texture coordinates (vt)" + of + ": face 0 has " +
+                             (m_faces_textured ? "them" : "none") + ", but " + numbered("face", m_texture_mismatch) +
+                             (m_faces_textured ? " has none" : " has"));
+    else if(!m_faces_textured && !m_soup.texture_points.empty())
+      m_soup.notes.push_back(
+        "no face refers to the " +
+        count_of(m_soup.texture_points.size(), "texture coordinate (vt)", "texture coordinates (vt)") + of);
     for(const Ignored& ignored : m_ignored)
       m_soup.notes.push_back("ignored " + describe_ignored(ignored) + of);
     if(m_other_ignored_lines > 0)
@@ -1031,7 +1153,6 @@ private:
       const char *keyword, *one, *many;
     };
     static const Known known[] = {
-      {"vt", "texture coordinate (vt)", "texture coordinates (vt)"},
       {"vn", "normal (vn)", "normals (vn)"},
       {"vp", "parameter-space vertex (vp)", "parameter-space vertices (vp)"},
       {"l", "polyline (l)", "polylines (l)"},
@@ -1053,19 +1174,27 @@ private:
     return count_of(ignored.lines, "line", "lines") + " with the unknown keyword " + shown(ignored.keyword);
   }
 
+  /// the first face, in the order of the file, with an index past the end
   void check_forward_references() const
   {
-    for(const Forward_reference& reference : m_forward)
-      if(reference.index > m_soup.points.size())
-        m_text.fail_at_line(reference.line, index_out_of_range(reference.face, std::to_string(reference.index),
-                                                               m_soup.points.size(), true));
+    const Forward_reference* vertex = m_forward.first_past(m_soup.points.size());
+    const Forward_reference* texture = m_texture_forward.first_past(m_soup.texture_points.size());
+    if(vertex != nullptr && (texture == nullptr || vertex->line <= texture->line))
+      m_text.fail_at_line(vertex->line,
+                          index_out_of_range(vertex->face, std::to_string(vertex->index), m_soup.points.size(), true));
+    if(texture != nullptr)
+      m_text.fail_at_line(texture->line, index_out_of_range(texture->face, std::to_string(texture->index),
+                                                            m_soup.texture_points.size(), true, texture_kind));
   }
 
   const char* m_data;
   std::size_t m_size;
   Text_cursor m_text;
   Mesh_soup m_soup;
-  std::vector<Forward_reference> m_forward;
+  Forward_references m_forward;         // to vertices
+  Forward_references m_texture_forward; // to texture coordinates
+  bool m_faces_textured = false;        // whether face 0 has texture coordinates (vt)
+  std::size_t m_texture_mismatch = 0;   // the first face that differs from face 0 there (0: none)
   std::vector<Ignored> m_ignored;
   std::size_t m_other_ignored_lines = 0;
   std::size_t m_extra_vertex_values_line = 0;

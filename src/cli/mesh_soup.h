@@ -10,7 +10,8 @@
 //
 // Numbering in the messages: faces from 0 in the order of the file (the
 // index of the face in the soup); vertices as the file numbers them (from 0
-// in OFF and PLY, from 1 in OBJ); lines from 1; byte offsets from 0.
+// in OFF and PLY, from 1 in OBJ), and so OBJ's texture coordinates (vt, from
+// 1); lines from 1; byte offsets from 0.
 #ifndef CGAL_SUBDIV_CLI_MESH_SOUP_H
 #define CGAL_SUBDIV_CLI_MESH_SOUP_H
 
@@ -49,7 +50,16 @@ struct Mesh_soup
   /// at least 3 of them; size = faces + 1
   std::vector<std::size_t> face_starts{0};
   std::vector<std::size_t> indices; // every index < points.size()
-  std::vector<Obj_tag> tags;        // OBJ only
+  /// OBJ only: every `vt` line in the order of the file, (u, v), finite
+  /// (`vt u` has v = 0; a third value, w, is dropped)
+  std::vector<std::array<double, 2>> texture_points;
+  /// OBJ only: empty, or the texture point of each corner, index for index
+  /// with `indices` (every index < texture_points.size()): face-varying, so
+  /// that a vertex on a seam has a texture point per side. Empty unless every
+  /// face gives every corner one (`v/vt` or `v/vt/vn`); a note says why
+  /// when there are texture points.
+  std::vector<std::size_t> texture_indices;
+  std::vector<Obj_tag> tags; // OBJ only
   /// one line per thing that was read but ignored (colours, normals, other
   /// PLY elements, text after the last face, ...), each naming the file
   std::vector<std::string> notes;
