@@ -308,7 +308,7 @@ subdiv_cli_test(surface_unreferenced_vertices ARGS surface ${hostile}/unreferenc
 # the crease tag is read (on a border edge, which is sharp anyway): only the vt lines are noted
 subdiv_cli_test(surface_obj_uv_and_tags ARGS surface ${hostile}/uv_and_tags.obj ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off FACES 4
-  STDERR_REGEX "^cgal-subdiv: note: ignored 3 texture coordinates \\(vt\\) of '[^']*uv_and_tags.obj'[^\n]*\n$")
+  STDERR_REGEX "^cgal-subdiv: note: ignored the 3 texture coordinates \\(vt\\) of '[^']*uv_and_tags.obj'[^\n]*\n$")
 
 # --- OpenSubdiv's OBJ tags (doc/sharp_features.md) ------------------------------
 # read, refined with, and written back for the children: of the cube's 12

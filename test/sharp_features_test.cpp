@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/limit.h>
 #include <CGAL/Subdiv/mark_sharp_edges.h>
 #include <CGAL/Subdiv/split_non_manifold.h>
@@ -34,6 +35,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -109,6 +111,31 @@ std::vector<std::vector<std::size_t>> polygons_of(const Tagged_shape& shape)
   return polygons;
 }
 
+using Uv_map = Mesh::Property_map<Mesh::Halfedge_index, Kernel::Point_2>;
+using Uv_index_map = Mesh::Property_map<Mesh::Halfedge_index, std::size_t>;
+
+/// the shape's texture coordinates (if every face has some) in the corner map
+/// "h:uv", face f of the mesh being the soup's face f and `origin` giving the
+/// soup's vertex of every vertex
+void add_uv_map(Mesh& mesh, const Tagged_shape& shape, const std::vector<std::size_t>& origin)
+{
+  const cgal_subdiv::Mesh_soup& soup = shape.soup;
+  if(soup.texture_indices.empty())
+    return;
+  Uv_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first;
+  Uv_index_map uv_index = mesh.add_property_map<Mesh::Halfedge_index, std::size_t>("h:uv_index").first;
+  for(auto f : mesh.faces())
+    for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      std::size_t k = soup.face_starts[f.idx()];
+      while(k + 1 < soup.face_starts[f.idx() + 1] && soup.indices[k] != origin[mesh.target(h)])
+        ++k;
+      EXPECT_EQ(soup.indices[k], origin[mesh.target(h)]) << "face " << f << " of the mesh is not the soup's";
+      const auto& t = soup.texture_points[soup.texture_indices[k]];
+      uv[h] = Kernel::Point_2(t[0], t[1]);
+      uv_index[h] = soup.texture_indices[k];
+    }
+}
+
 /// the mesh of the shape, vertex i being the file's vertex i and face f its
 /// face f, with its tags in the maps "e:sharpness", "v:sharpness" and
 /// "f:hole"; with `split`, the soup goes through `split_non_manifold` and
@@ -161,6 +188,7 @@ Mesh tagged_mesh(const Tagged_shape& shape, bool split = false)
         vertices[v] = (std::max)(vertices[v], static_cast<double>(shape.corner_sharpness[k]));
   for(int f : shape.holes)
     put(holes, Mesh::Face_index(static_cast<Mesh::size_type>(f)), true);
+  add_uv_map(mesh, shape, origin);
   return mesh;
 }
 
@@ -172,7 +200,8 @@ Sd::Boundary_interpolation boundary_of(const Tagged_shape& shape)
 }
 
 /// refines the tagged mesh one level with the scheme and the shape's options
-void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
+void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape,
+                 const Sd::Carried_data<Mesh, double>& data = Sd::Carried_data<Mesh, double>())
 {
   const Edge_sharpness edges = mesh.property_map<Mesh::Edge_index, double>("e:sharpness").first;
   const Vertex_sharpness vertices = mesh.property_map<Mesh::Vertex_index, double>("v:sharpness").first;
@@ -182,7 +211,8 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
                     .crease_method(shape.method)
                     .face_hole_map(holes)
                     .boundary_interpolation(boundary_of(shape))
-                    .isolated_vertices(Sd::Isolated_vertices::keep); // OpenSubdiv keeps them too
+                    .isolated_vertices(Sd::Isolated_vertices::keep) // OpenSubdiv keeps them too
+                    .carried_data(data);
   if(scheme == Scheme::catmark)
     Sd::catmull_clark_subdivision(mesh,
                                   np.triangle_subdivision(shape.smooth_triangles ? Sd::Triangle_subdivision::smooth
@@ -194,7 +224,8 @@ void refine_once(Mesh& mesh, Scheme scheme, const Tagged_shape& shape)
                                         .vertex_sharpness_map(vertices)
                                         .crease_method(shape.method)
                                         .face_hole_map(holes)
-                                        .isolated_vertices(Sd::Isolated_vertices::keep));
+                                        .isolated_vertices(Sd::Isolated_vertices::keep)
+                                        .carried_data(data));
 }
 
 /// the nonzero terms of a limit row, by source: rows compared whatever the
@@ -316,7 +347,9 @@ struct Osd_level
 };
 
 /// OpenSubdiv Far's refiner of the shape, from the same tags, not refined yet
-std::unique_ptr<Osd::TopologyRefiner> opensubdiv_refiner(const Tagged_shape& shape, Scheme scheme)
+std::unique_ptr<Osd::TopologyRefiner> opensubdiv_refiner(
+  const Tagged_shape& shape, Scheme scheme,
+  OpenSubdiv::Sdc::Options::FVarLinearInterpolation fvar = OpenSubdiv::Sdc::Options::FVAR_LINEAR_ALL)
 {
   std::vector<int> sizes, indices;
   for(std::size_t f = 0; f < shape.soup.number_of_faces(); ++f)
@@ -336,7 +369,16 @@ std::unique_ptr<Osd::TopologyRefiner> opensubdiv_refiner(const Tagged_shape& sha
   desc.cornerWeights = shape.corner_sharpness.data();
   desc.numHoles = static_cast<int>(shape.holes.size());
   desc.holeIndices = shape.holes.data();
+  Osd::TopologyDescriptor::FVarChannel uv_channel;
+  std::vector<int> uv_indices(shape.soup.texture_indices.begin(), shape.soup.texture_indices.end());
+  if(!uv_indices.empty()) {
+    uv_channel.numValues = static_cast<int>(shape.soup.texture_points.size());
+    uv_channel.valueIndices = uv_indices.data();
+    desc.numFVarChannels = 1;
+    desc.fvarChannels = &uv_channel;
+  }
   OpenSubdiv::Sdc::Options options;
+  options.SetFVarLinearInterpolation(fvar);
   options.SetVtxBoundaryInterpolation(shape.boundary == 0   ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_NONE
                                       : shape.boundary == 1 ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
                                                             : OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
@@ -606,6 +648,146 @@ TEST_P(OpenSubdivShapes, refine_as_opensubdiv_far_does)
   }
 }
 
+/// a corner of a face, where it is and the value it holds
+using Corner_value = std::array<double, 5>; // x, y, z, u, v
+
+/// the largest distance from a value of `a` to the nearest value of `b` at
+/// the same vertex (positions within 1e-9 of the diagonal)
+double value_mismatch(const std::vector<Corner_value>& a, std::vector<Corner_value> b, double diagonal)
+{
+  std::sort(b.begin(), b.end());
+  const double slab = 1e-9 * diagonal;
+  double worst = 0;
+  for(const Corner_value& p : a) {
+    double best = 1e300;
+    for(auto it = std::lower_bound(b.begin(), b.end(), Corner_value{p[0] - slab, -1e300, -1e300, -1e300, -1e300});
+        it != b.end() && (*it)[0] <= p[0] + slab; ++it)
+      if(std::abs((*it)[1] - p[1]) <= slab && std::abs((*it)[2] - p[2]) <= slab)
+        best = (std::min)(best, std::hypot((*it)[3] - p[3], (*it)[4] - p[4]));
+    worst = (std::max)(worst, best);
+  }
+  return worst;
+}
+
+const std::pair<Sd::Face_varying_interpolation, OpenSubdiv::Sdc::Options::FVarLinearInterpolation> fvar_modes[] = {
+  {Sd::Face_varying_interpolation::none, OpenSubdiv::Sdc::Options::FVAR_LINEAR_NONE},
+  {Sd::Face_varying_interpolation::corners_only, OpenSubdiv::Sdc::Options::FVAR_LINEAR_CORNERS_ONLY},
+  {Sd::Face_varying_interpolation::corners_plus1, OpenSubdiv::Sdc::Options::FVAR_LINEAR_CORNERS_PLUS1},
+  {Sd::Face_varying_interpolation::corners_plus2, OpenSubdiv::Sdc::Options::FVAR_LINEAR_CORNERS_PLUS2},
+  {Sd::Face_varying_interpolation::boundaries, OpenSubdiv::Sdc::Options::FVAR_LINEAR_BOUNDARIES},
+  {Sd::Face_varying_interpolation::all, OpenSubdiv::Sdc::Options::FVAR_LINEAR_ALL}};
+
+/// the corners of every level of OpenSubdiv Far, up to `levels`, with their
+/// UVs (PrimvarRefiner::InterpolateFaceVarying) in `mode`
+std::vector<std::vector<Corner_value>> opensubdiv_corner_values(const Tagged_shape& shape, Scheme scheme, int levels,
+                                                                OpenSubdiv::Sdc::Options::FVarLinearInterpolation mode)
+{
+  const std::unique_ptr<Osd::TopologyRefiner> refiner = opensubdiv_refiner(shape, scheme, mode);
+  refiner->RefineUniform(Osd::TopologyRefiner::UniformOptions(levels));
+  Osd::PrimvarRefinerReal<double> primvar(*refiner);
+  std::vector<Osd_vertex> points, uvs;
+  for(const auto& p : shape.soup.points)
+    points.push_back(Osd_vertex{{p[0], p[1], p[2]}});
+  for(const auto& t : shape.soup.texture_points)
+    uvs.push_back(Osd_vertex{{t[0], t[1], 0}});
+  std::vector<std::vector<Corner_value>> result(levels + 1);
+  for(int level = 1; level <= levels; ++level) {
+    const Osd::TopologyLevel& topology = refiner->GetLevel(level);
+    std::vector<Osd_vertex> new_points(topology.GetNumVertices()), new_uvs(topology.GetNumFVarValues(0));
+    primvar.Interpolate(level, points, new_points);
+    primvar.InterpolateFaceVarying(level, uvs, new_uvs, 0);
+    points.swap(new_points);
+    uvs.swap(new_uvs);
+    for(int f = 0; f < topology.GetNumFaces(); ++f) {
+      const auto corners = topology.GetFaceVertices(f);
+      const auto values = topology.GetFaceFVarValues(f, 0);
+      for(int i = 0; i < corners.size(); ++i) {
+        const Osd_vertex &p = points[corners[i]], &t = uvs[values[i]];
+        result[level].push_back(Corner_value{p.p[0], p.p[1], p.p[2], t.p[0], t.p[1]});
+      }
+    }
+  }
+  return result;
+}
+
+std::vector<Corner_value> corner_values(const Mesh& mesh, const Uv_map& uv)
+{
+  std::vector<Corner_value> result;
+  for(auto h : mesh.halfedges())
+    if(!mesh.is_border(h)) {
+      const Kernel::Point_3& p = mesh.point(mesh.target(h));
+      result.push_back(Corner_value{p.x(), p.y(), p.z(), uv[h].x(), uv[h].y()});
+    }
+  return result;
+}
+
+/// the (shape, mode) pairs (mode: `Face_varying_interpolation` as an int)
+/// where this package's face-varying values differ from Far's, 40 of 642
+/// (doc/provenance.md, "Face-varying data"): values whose sector at a vertex
+/// holds a seam that ends further on (Far groups the corners of a vertex by
+/// their index there only; the cut mesh also by the other end), plus2's
+/// darts and concave corners, plus1's and plus2's dependent sharpness next to
+/// creases, and the non-manifold fan. The test checks that they still
+/// differ, so that fixing one shows here.
+bool is_known_face_varying_difference(const std::string& shape, Sd::Face_varying_interpolation mode)
+{
+  static const std::set<std::pair<std::string, int>> known = {
+    {"catmark_bishop", 0},        {"catmark_car", 0},           {"catmark_fan", 0},
+    {"catmark_fan", 1},           {"catmark_fan", 2},           {"catmark_fan", 3},
+    {"catmark_fvar_bound4", 0},   {"catmark_fvar_bound4", 1},   {"catmark_fvar_bound4", 2},
+    {"catmark_fvar_bound4", 3},   {"catmark_gregory_test1", 3}, {"catmark_gregory_test4", 0},
+    {"catmark_gregory_test8", 3}, {"catmark_helmet", 0},        {"catmark_lefthanded", 0},
+    {"catmark_lefthanded", 1},    {"catmark_lefthanded", 2},    {"catmark_lefthanded", 3},
+    {"catmark_pawn", 0},          {"catmark_righthanded", 0},   {"catmark_righthanded", 1},
+    {"catmark_righthanded", 2},   {"catmark_righthanded", 3},   {"catmark_rook", 0},
+    {"catmark_val2_interior", 3}, {"loop_cube_creases1", 2},    {"loop_cube_creases1", 3},
+    {"loop_cubes_infsharp", 2},   {"loop_cubes_infsharp", 3},   {"loop_cubes_semisharp", 2},
+    {"loop_cubes_semisharp", 3},  {"loop_fvar_bound3", 0},      {"loop_fvar_bound3", 1},
+    {"loop_fvar_bound3", 2},      {"loop_fvar_bound3", 3},      {"loop_icos_infsharp", 2},
+    {"loop_icos_infsharp", 3},    {"loop_icos_semisharp", 2},   {"loop_icos_semisharp", 3},
+    {"loop_tetrahedron", 3}};
+  return known.count({shape, static_cast<int>(mode)}) > 0;
+}
+
+// the UVs of every shape that has some (109 of the 122; 107 that a halfedge
+// mesh holds), after 1 to 3 levels, in every mode, as Far's
+// InterpolateFaceVarying from the same tags: every corner of each side has a
+// corner of the other at the same vertex with the same UV, to within 1e-12
+TEST_P(OpenSubdivShapes, face_varying_values_as_opensubdiv_far)
+{
+  const Conformance_case& c = GetParam();
+  const Tagged_shape shape = read_shape(c.shape);
+  if(shape.soup.texture_indices.empty() || is_unsplittable_shape(c.shape))
+    return;
+  for(const auto& [mode, far_mode] : fvar_modes) {
+    SCOPED_TRACE("mode " + std::to_string(static_cast<int>(mode)));
+    const auto reference = opensubdiv_corner_values(shape, c.scheme, 3, far_mode);
+    Mesh mesh = tagged_mesh(shape, is_non_manifold_shape(c.shape));
+    const Uv_map uv = mesh.property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first;
+    const Uv_index_map uv_index = mesh.property_map<Mesh::Halfedge_index, std::size_t>("h:uv_index").first;
+    for(auto v : mesh.vertices()) // Far keeps them, with no corner: they are no business of the UVs
+      if(mesh.is_isolated(v))
+        mesh.remove_vertex(v);
+    mesh.collect_garbage();
+    Sd::Carried_data<Mesh, double> data;
+    data.corner_map(uv, mode, uv_index); // the topology of the vt indices, as Far's
+    double worst = 0;
+    for(int level = 1; level <= 3; ++level) {
+      refine_once(mesh, c.scheme, shape, data);
+      const auto ours = corner_values(mesh, uv);
+      const double diagonal = testing_utils::diagonal(testing_utils::double_points(mesh));
+      worst = (std::max)(
+        {worst, value_mismatch(ours, reference[level], diagonal), value_mismatch(reference[level], ours, diagonal)});
+    }
+    if(getenv("FVAR_LIST") && worst >= 1e-12)
+      std::cout << "{\"" << c.shape << "\", " << static_cast<int>(mode) << "}," << std::endl;
+    if(is_known_face_varying_difference(c.shape, mode))
+      EXPECT_GE(worst, 1e-12) << "agrees now: remove it from the known differences";
+    else
+      EXPECT_LT(worst, 1e-12);
+  }
+}
+
 /// the vertices of each kind whose normals were compared with Far's (all shapes), by level (0, 2)
 struct Normal_counts
 {
@@ -822,7 +1004,12 @@ INSTANTIATE_TEST_SUITE_P(Shapes, OpenSubdivShapes, testing::ValuesIn(every_shape
 TEST(OpenSubdivShapes, all_122_are_bundled)
 {
   EXPECT_EQ(every_shape().size(), 122u);
+  std::size_t with_uvs = 0; // compared by face_varying_values_as_opensubdiv_far
+  for(const Conformance_case& c : every_shape())
+    with_uvs += read_shape(c.shape).soup.texture_indices.empty() || is_unsplittable_shape(c.shape) ? 0 : 1;
+  EXPECT_EQ(with_uvs, 107u); // 109 with UVs, less the 2 that no halfedge mesh holds
 }
+
 #else
 TEST(OpenSubdivShapes, refine_as_opensubdiv_far_does)
 {

@@ -194,6 +194,9 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     notes.push_back("ignored " + std::to_string(soup.tags.size()) +
                     (soup.tags.size() == 1 ? " tag line" : " tag lines") + " (t) of '" + path +
                     "': creases, corners and holes are not supported yet, the surface is refined smooth");
+  if(!soup.texture_indices.empty())
+    notes.push_back("ignored the " + std::to_string(soup.texture_points.size()) + " texture coordinates (vt) of '" +
+                    path + "': the command line does not carry them yet (the library's Carried_data::corner_map does)");
   if(soup.number_of_faces() == 0)
     throw Input_error("'" + path + "' holds no faces");
   std::vector<Point> points;

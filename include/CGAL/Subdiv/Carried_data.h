@@ -80,6 +80,12 @@ enum class Interpolation {
  *   new face gets the combination of the corner values of its parent face
  *   that the linear scheme of the split gives its vertex. A seam stays a
  *   seam; border halfedges are left alone. For the schemes that split edges.
+ * - `corner_map(map, mode, index_map)`: the same, the face-varying topology
+ *   coming from a halfedge map of value indices (as OpenSubdiv's face-varying
+ *   channels and OBJ's `vt` references give it): two corners at one vertex
+ *   are one value when their indices are equal, whatever their values. The
+ *   refined corners get the indices of their new values (one per value, from
+ *   0 on every level), so that an indexed file can be written.
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -147,56 +153,18 @@ public:
   template <class CornerMap>
   Carried_data& corner_map(CornerMap map, Face_varying_interpolation interpolation)
   {
-    const auto make_writer = [map](const Mesh& mesh, const Vertex_stencils& linear_rows) -> Corner_writer {
-      using Value = typename boost::property_traits<CornerMap>::value_type;
-      // the old corners of every old face, in face order
-      auto old = std::make_shared<std::vector<std::vector<std::pair<vertex_descriptor, Value>>>>();
-      for(face_descriptor f : faces(mesh)) {
-        old->emplace_back();
-        for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-          old->back().emplace_back(target(h, mesh), get(map, h));
-      }
-      return [map, old, &linear_rows](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
-                                      const std::vector<vertex_descriptor>& new_vertices,
-                                      const std::vector<Vertex_origin>&) {
-        for(const New_face& face : new_faces) {
-          const auto& parent = (*old)[face.parent];
-          const auto value_of = [&parent](vertex_descriptor u) -> const Value& {
-            return std::find_if(parent.begin(), parent.end(), [u](const auto& c) { return c.first == u; })->second;
-          };
-          std::array<Value, 4> values;
-          for(int i = 0; i < face.size; ++i)
-            values[i] = internal::combine_values<Value>(value_of, linear_rows[face.vertices[i]].terms());
-          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh))
-            put(map, h, values[face.corner_at(target(h, new_mesh), new_vertices)]);
-        }
-      };
-    };
-    // the smooth modes: the values of the cut mesh's rows, put where the origins say
-    const auto make_smooth_writer = [map](const Face_varying_rows& fvar) -> Corner_writer {
-      using Value = typename boost::property_traits<CornerMap>::value_type;
-      const auto value_of = [&](typename Face_varying_rows::Cut_vertex v) -> Value {
-        return get(map, fvar.corner_of_value[v]);
-      };
-      auto values = std::make_shared<std::vector<Value>>();
-      values->reserve(fvar.rows.size());
-      for(const auto& row : fvar.rows)
-        values->push_back(internal::combine_values<Value>(value_of, row.terms()));
-      auto lookup = std::make_shared<Face_varying_rows>();
-      lookup->face_starts = fvar.face_starts;
-      lookup->entries = fvar.entries;
-      return [map, values, lookup](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
-                                   const std::vector<vertex_descriptor>& new_vertices,
-                                   const std::vector<Vertex_origin>& origins) {
-        for(const New_face& face : new_faces)
-          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh)) {
-            const std::size_t j = face.vertices[face.corner_at(target(h, new_mesh), new_vertices)];
-            put(map, h, (*values)[lookup->row_of(face.parent, origins[j])]);
-          }
-      };
-    };
     const auto same = [map](halfedge_descriptor a, halfedge_descriptor b) { return get(map, a) == get(map, b); };
-    m_corner_channels.push_back(Corner_channel{interpolation, make_writer, make_smooth_writer, same});
+    m_corner_channels.push_back(Corner_channel{interpolation, same, corner_writer_maker(map, No_index_map())});
+    return *this;
+  }
+
+  template <class CornerMap, class IndexMap>
+  Carried_data& corner_map(CornerMap map, Face_varying_interpolation interpolation, IndexMap indices)
+  {
+    const auto same = [indices](halfedge_descriptor a, halfedge_descriptor b) {
+      return get(indices, a) == get(indices, b);
+    };
+    m_corner_channels.push_back(Corner_channel{interpolation, same, corner_writer_maker(map, indices)});
     return *this;
   }
 
@@ -257,8 +225,7 @@ public:
     void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
     {
       m_stencils.read(host, mask, loop);
-      if(m_data->interpolates(Interpolation::linear) || !m_data->m_corner_channels.empty() ||
-         m_data->wants_provenance())
+      if(m_data->interpolates(Interpolation::linear) || m_data->wants_provenance())
         m_linear_stencils.read(host, linear_mask(mask), loop);
       if(m_data->m_origins != nullptr || m_data->wants_provenance() || !m_data->m_corner_channels.empty()) {
         m_new_origins.clear();
@@ -273,14 +240,16 @@ public:
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
       for(const auto& channel : m_data->m_corner_channels) {
+        const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
         if constexpr(has_sharp_level<Mask>::value)
           if(channel.interpolation != Face_varying_interpolation::all) {
-            m_corner_writers.push_back(channel.make_smooth_writer(
-              internal::face_varying_rows<Mesh, FT>(*m_mesh, mask, channel.interpolation, channel.same)));
+            m_corner_writers.push_back(
+              channel.make_writer(internal::smooth_face_varying_rows<Mesh, FT>(topology, mask, channel.interpolation)));
             continue;
           }
         // linear in every face (the linear schemes are linear in every mode)
-        m_corner_writers.push_back(channel.make_writer(*m_mesh, m_linear_stencils.rows));
+        m_corner_writers.push_back(
+          channel.make_writer(internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask))));
       }
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
@@ -403,13 +372,46 @@ private:
   struct Corner_channel
   {
     Face_varying_interpolation interpolation;
-    /// reads the old corner values, combines them by the linear stencils of the new vertices
-    std::function<Corner_writer(const Mesh&, const Vertex_stencils&)> make_writer;
-    /// reads the old corner values, combines them by the rows of the cut mesh
-    std::function<Corner_writer(const Face_varying_rows&)> make_smooth_writer;
-    /// whether two corners hold equal values
+    /// whether two corners hold the same value (the same index, with an index map)
     std::function<bool(halfedge_descriptor, halfedge_descriptor)> same;
+    /// reads the old corner values, combines them by the rows of the level
+    std::function<Corner_writer(const Face_varying_rows&)> make_writer;
   };
+
+  struct No_index_map
+  {};
+
+  // the writer of a corner map (and of its index map: a new value's index is
+  // its row, so corners with one value share it)
+  template <class CornerMap, class IndexMap>
+  static std::function<Corner_writer(const Face_varying_rows&)> corner_writer_maker(CornerMap map, IndexMap indices)
+  {
+    return [map, indices](const Face_varying_rows& fvar) -> Corner_writer {
+      using Value = typename boost::property_traits<CornerMap>::value_type;
+      const auto value_of = [&](typename Face_varying_rows::Cut_vertex v) -> Value {
+        return get(map, fvar.corner_of_value[v]);
+      };
+      auto values = std::make_shared<std::vector<Value>>();
+      values->reserve(fvar.rows.size());
+      for(const auto& row : fvar.rows)
+        values->push_back(internal::combine_values<Value>(value_of, row.terms()));
+      auto lookup = std::make_shared<Face_varying_rows>();
+      lookup->face_starts = fvar.face_starts;
+      lookup->entries = fvar.entries;
+      return [map, indices, values, lookup](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
+                                            const std::vector<vertex_descriptor>& new_vertices,
+                                            const std::vector<Vertex_origin>& origins) {
+        for(const New_face& face : new_faces)
+          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh)) {
+            const std::size_t j = face.vertices[face.corner_at(target(h, new_mesh), new_vertices)];
+            const std::size_t row = lookup->row_of(face.parent, origins[j]);
+            put(map, h, (*values)[row]);
+            if constexpr(!std::is_same<IndexMap, No_index_map>::value)
+              put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
+          }
+      };
+    };
+  }
 
   // whether a mask refines with sharpness tags (the smooth face-varying modes
   // cut the mesh and tag the cut); the linear masks are linear in every mode

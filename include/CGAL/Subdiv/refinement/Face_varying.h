@@ -117,6 +117,7 @@ public:
   }
 
   const Cut& cut() const { return m_cut; }
+  const Mesh& mesh() const { return *m_mesh; }
   const Mesh_numbering<Mesh>& numbering() const { return m_number; }
   /// the vertex of the cut mesh at corner h (a halfedge with a face)
   typename Cut::Vertex_index value_at(halfedge_descriptor h) const { return m_value_of[m_number(h)]; }
@@ -263,41 +264,14 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
   }
 }
 
-/*
- * The rows of one level of a corner map whose values agree as `same` says,
- * refined by `mask` (a tagged mask: the sharpness of `mesh`'s level, which
- * the cut mesh takes, seams being borders) in `mode`.
- */
-template <class Mesh, class FT, class Mask>
-Face_varying_rows<Mesh, FT> face_varying_rows(
-  const Mesh& mesh, const Mask& mask, Face_varying_interpolation mode,
-  const std::function<bool(typename boost::graph_traits<Mesh>::halfedge_descriptor,
-                           typename boost::graph_traits<Mesh>::halfedge_descriptor)>& same)
+/// the rows of `topology`'s cut mesh refined by `cut_mask` (a mask of the cut mesh)
+template <class Mesh, class FT, class CutMask>
+Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topology, const CutMask& cut_mask)
 {
   using Cut = Face_varying_cut_mesh;
-  using Level = Sharp_level<Cut, FT>;
-  using S = typename Level::S;
-  const Face_varying_topology<Mesh> topology(mesh, same);
-  const Mesh_numbering<Mesh>& number = topology.numbering();
   const Cut& cut = topology.cut();
-
-  // the sharpness of the mesh's level: the mask's tags, or none but the pinned corners
-  const Sharp_level<Mesh, FT>* tags = mask.sharp_level();
-  std::unique_ptr<Sharp_level<Mesh, FT>> untagged;
-  if(tags == nullptr) {
-    untagged = std::make_unique<Sharp_level<Mesh, FT>>(
-      mesh, [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, border_corners_of(mask));
-    tags = untagged.get();
-  }
-  const Level cut_level(
-    cut, [&](typename Cut::Edge_index e) { return tags->edge_sharpness(topology.edge_of(e)); },
-    [&](typename Cut::Vertex_index v) {
-      return is_kept_by(mode, topology, v) ? Level::Rules::infinite()
-                                           : S(tags->vertex_sharpness(topology.vertex_of(v)));
-    },
-    tags->method(), Border_corners::smooth);
-  const auto cut_mask = mask.template rebind<Cut, FT>().with_sharp_level(&cut_level);
-
+  const Mesh_numbering<Mesh>& number = topology.numbering();
+  const Mesh& mesh = topology.mesh();
   Face_varying_rows<Mesh, FT> result;
   const auto host = make_host(cut, cut_mask);
   Stencil_recorder<Cut, FT> recorder;
@@ -331,6 +305,47 @@ Face_varying_rows<Mesh, FT> face_varying_rows(
     result.face_starts.push_back(result.entries.size());
   }
   return result;
+}
+
+/*
+ * The rows of one level of a corner map whose topology is `topology`,
+ * refined by `mask` (a mask that takes sharpness tags, with the tags of the
+ * level or none) in a smooth `mode`: the cut mesh takes the level's
+ * sharpness, seams being borders, and the vertices that `mode` keeps are
+ * infinitely sharp.
+ */
+template <class Mesh, class FT, class Mask>
+Face_varying_rows<Mesh, FT> smooth_face_varying_rows(const Face_varying_topology<Mesh>& topology, const Mask& mask,
+                                                     Face_varying_interpolation mode)
+{
+  using Cut = Face_varying_cut_mesh;
+  using Level = Sharp_level<Cut, FT>;
+  using S = typename Level::S;
+  // the sharpness of the mesh's level: the mask's tags, or none but the pinned corners
+  const Sharp_level<Mesh, FT>* tags = mask.sharp_level();
+  std::unique_ptr<Sharp_level<Mesh, FT>> untagged;
+  if(tags == nullptr) {
+    untagged = std::make_unique<Sharp_level<Mesh, FT>>(
+      topology.mesh(), [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, border_corners_of(mask));
+    tags = untagged.get();
+  }
+  const Level cut_level(
+    topology.cut(), [&](typename Cut::Edge_index e) { return tags->edge_sharpness(topology.edge_of(e)); },
+    [&](typename Cut::Vertex_index v) {
+      return is_kept_by(mode, topology, v) ? Level::Rules::infinite()
+                                           : S(tags->vertex_sharpness(topology.vertex_of(v)));
+    },
+    tags->method(), Border_corners::smooth);
+  return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level));
+}
+
+/// the rows of one level of a corner map whose topology is `topology`,
+/// refined by `linear_mask` (the linear scheme of the split), face by face
+template <class Mesh, class FT, class LinearMask>
+Face_varying_rows<Mesh, FT> linear_face_varying_rows(const Face_varying_topology<Mesh>& topology,
+                                                     const LinearMask& linear_mask)
+{
+  return rows_of_cut<Mesh, FT>(topology, linear_mask.template rebind<Face_varying_cut_mesh, FT>());
 }
 
 } // namespace internal
