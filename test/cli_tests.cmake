@@ -10,7 +10,7 @@ set(SUBDIV_CLI_POLYGON ${PROJECT_SOURCE_DIR}/doc/data/polygon.txt)
 # subdiv_cli_test(name ARGS arg... [CONTAINS line...] [RC n] [OUTPUT f] [POINTS n] ...)
 # see run_cli.cmake for the checks; @WORK@ is the test's own empty directory.
 function(subdiv_cli_test name)
-  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES FIRST_LINE LAST_LINE FILE FILE_REGEX FILE_NOT_REGEX TIMEOUT)
+  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES TEXTURE_POINTS FIRST_LINE LAST_LINE FILE FILE_REGEX FILE_NOT_REGEX TIMEOUT)
   cmake_parse_arguments(T "" "${single}" "ARGS;CONTAINS" ${ARGN})
   list(JOIN T_ARGS "|" args)
   set(defs -DEXE=$<TARGET_FILE:cgal-subdiv> -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/${name} "-DARGS=${args}")
@@ -305,10 +305,55 @@ subdiv_cli_test(surface_coff_short_colour ARGS surface ${hostile}/coff_short_col
 subdiv_cli_test(surface_unreferenced_vertices ARGS surface ${hostile}/unreferenced.off ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off VERTICES 6 FACES 4
   STDERR_REGEX "note: dropped the 2 vertices of '[^']*unreferenced.off' that no face uses \\(of 5\\)")
-# the crease tag is read (on a border edge, which is sharp anyway): only the vt lines are noted
+# the crease tag is read (on a border edge, which is sharp anyway); the vt
+# lines are carried to an OBJ OUTPUT, and left out of an OFF one with a note
 subdiv_cli_test(surface_obj_uv_and_tags ARGS surface ${hostile}/uv_and_tags.obj ${mesh_out} --scheme loop --levels 1
   OUTPUT @WORK@/out.off FACES 4
-  STDERR_REGEX "^cgal-subdiv: note: ignored the 3 texture coordinates \\(vt\\) of '[^']*uv_and_tags.obj'[^\n]*\n$")
+  STDERR_REGEX "^cgal-subdiv: note: left the texture coordinates \\(vt\\) of '[^']*uv_and_tags.obj' out: OUTPUT '[^']*out.off' is OFF, which holds none \\(write .obj to keep them\\)\n$")
+
+# --- texture coordinates with seams (face-varying data, doc/provenance.md) ------
+# two quads, each its own texture island, so that the edge between them is a
+# seam: refined as two separate quads, each island keeps its corners (corners
+# plus1, the default) and gets its edge midpoints and its centre
+set(islands ${SUBDIV_CLI_DIR}/two_islands.obj)
+subdiv_cli_test(surface_uv_seam ARGS surface ${islands} -o @WORK@/out.obj --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 15 FACES 8 TEXTURE_POINTS 18
+  CONTAINS "vt 0 0" "vt 0.5 0" "vt 0.5 0.5" "vt 2 0" "vt 2.5 0.5" "t facevaryinginterpolateboundary 1/0/0 2"
+  FILE @WORK@/out.obj FILE_NOT_REGEX "vt 0.125 0.125")
+# two levels: 5 x 5 texture points per island
+subdiv_cli_test(surface_uv_seam_two_levels ARGS surface ${islands} -o @WORK@/out.obj --scheme catmull-clark --levels 2
+  OUTPUT @WORK@/out.obj VERTICES 45 FACES 32 TEXTURE_POINTS 50)
+# none: smooth everywhere, the corner of an island follows the border rule
+# (6 (0,0) + (1,0) + (0,1)) / 8
+subdiv_cli_test(surface_uv_fvar_none ARGS surface ${islands} -o @WORK@/out.obj --scheme catmull-clark --levels 1
+  --fvar none OUTPUT @WORK@/out.obj TEXTURE_POINTS 18
+  CONTAINS "vt 0.125 0.125" "vt 2.875 0.875" "vt 0.5 0.5" "t facevaryinginterpolateboundary 1/0/0 0")
+# the mode of the file's tag, and --fvar over it
+subdiv_cli_test(surface_uv_fvar_tag ARGS surface ${SUBDIV_CLI_DIR}/two_islands_smooth.obj -o @WORK@/out.obj
+  --scheme catmull-clark --levels 1 OUTPUT @WORK@/out.obj CONTAINS "vt 0.125 0.125" "t facevaryinginterpolateboundary 1/0/0 0")
+subdiv_cli_test(surface_uv_fvar_over_tag ARGS surface ${SUBDIV_CLI_DIR}/two_islands_smooth.obj -o @WORK@/out.obj
+  --scheme catmull-clark --levels 1 --fvar all OUTPUT @WORK@/out.obj CONTAINS "vt 0 0" "t facevaryinginterpolateboundary 1/0/0 5"
+  FILE @WORK@/out.obj FILE_NOT_REGEX "vt 0.125 0.125")
+# t facevaryingpropagatecorners 1 makes corners plus1 corners plus2, as in Hbr
+subdiv_cli_test(surface_uv_propagate_corners ARGS surface ${SUBDIV_CLI_DIR}/two_islands_propagate.obj -o @WORK@/out.obj
+  --scheme catmull-clark --levels 1 OUTPUT @WORK@/out.obj CONTAINS "t facevaryinginterpolateboundary 1/0/0 3")
+# Loop and the linear split carry them too; 0 levels write them back as read
+subdiv_cli_test(surface_uv_loop ARGS surface ${hostile}/uv_and_tags.obj -o @WORK@/out.obj --scheme loop --levels 1
+  OUTPUT @WORK@/out.obj VERTICES 6 FACES 4 TEXTURE_POINTS 6 CONTAINS "vt 0 1" "vt 0.5 0.5" "f 1/1 4/2 6/3")
+subdiv_cli_test(surface_uv_linear ARGS surface ${islands} -o @WORK@/out.obj --scheme linear --levels 1
+  OUTPUT @WORK@/out.obj TEXTURE_POINTS 18 CONTAINS "vt 2.5 0.5" "vt 3 0.5")
+subdiv_cli_test(surface_uv_zero_levels ARGS surface ${islands} -o @WORK@/out.obj --scheme catmull-clark --levels 0
+  OUTPUT @WORK@/out.obj TEXTURE_POINTS 8 CONTAINS "f 1/1 2/2 5/3 4/4" "f 2/5 3/6 6/7 5/8" "vt 2 1")
+# the schemes that make faces across the old edges leave them out, with a note
+subdiv_cli_test(surface_uv_doo_sabin ARGS surface ${islands} -o @WORK@/out.obj --scheme doo-sabin --levels 1
+  OUTPUT @WORK@/out.obj TEXTURE_POINTS 0
+  STDERR_REGEX "note: left the texture coordinates \\(vt\\) of '[^']*two_islands.obj' out: --scheme doo-sabin does not carry them")
+subdiv_cli_test(surface_uv_no_texture ARGS surface ${SUBDIV_CLI_DIR}/tetra.obj -o @WORK@/out.obj --scheme loop --levels 1
+  --fvar all OUTPUT @WORK@/out.obj TEXTURE_POINTS 0 STDERR_REGEX "note: --fvar: '[^']*tetra.obj' has no texture coordinates")
+subdiv_cli_error(surface_uv_bad_fvar 2 "--fvar is none, corners-only, corners-plus1, corners-plus2, boundaries or all, not 'linear'"
+  ARGS surface ${islands} -o @WORK@/out.obj --scheme loop --levels 1 --fvar linear)
+subdiv_cli_error(surface_uv_bad_fvar_tag 1 "fvar_mode_out_of_range.obj' line 19: tag 'facevaryinginterpolateboundary': is 0 \\(none\\), .* not 7"
+  ARGS surface ${hostile}/fvar_mode_out_of_range.obj -o @WORK@/out.obj --scheme catmull-clark --levels 1)
 
 # --- OpenSubdiv's OBJ tags (doc/sharp_features.md) ------------------------------
 # read, refined with, and written back for the children: of the cube's 12
@@ -318,7 +363,7 @@ subdiv_cli_test(surface_obj_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv
   -o @WORK@/out.obj --scheme catmull-clark --levels 1
   OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
   FILE @WORK@/out.obj
-  FILE_REGEX "\nt interpolateboundary 1/0/0 2\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$"
+  FILE_REGEX "\nt interpolateboundary 1/0/0 2\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+t facevaryinginterpolateboundary 1/0/0 2\n$"
   FILE_NOT_REGEX "t corner")
 foreach(bad
     "crease_not_an_edge|line 7: tag 'crease': vertices 1 and 3 are not joined by an edge of the mesh"
@@ -341,7 +386,7 @@ subdiv_cli_test(surface_obj_holes ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdi
   -o @WORK@/out.obj --scheme catmull-clark --levels 1
   OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
   FILE @WORK@/out.obj
-  FILE_REGEX "\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\n$")
+  FILE_REGEX "\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt hole 1/0/0 [0-9]+\nt facevaryinginterpolateboundary 1/0/0 2\n$")
 subdiv_cli_test(surface_off_without_holes ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_hole_test1.obj
   -o @WORK@/out.off --scheme catmull-clark --levels 1
   OUTPUT @WORK@/out.off VERTICES 25 FACES 20)
@@ -362,7 +407,7 @@ subdiv_cli_test(surface_linear_carries_tags ARGS surface ${SUBDIV_TEST_DATA_DIR}
   -o @WORK@/out.obj --scheme linear --levels 1 --boundary edges-and-corners
   OUTPUT @WORK@/out.obj VERTICES 26 FACES 24
   FILE @WORK@/out.obj
-  FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+$")
+  FILE_REGEX "\nt interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 normal\n(t crease 2/1/0 [0-9]+ [0-9]+ 4\n)+t facevaryinginterpolateboundary 1/0/0 2\n$")
 # doo-sabin with creases: the octahedron's equator (4 infinitely sharp edges)
 # is refined by Chaikin's rule, the corners of its faces at an equator vertex
 # welded across it: 24 - 8 vertices, 8 + 12 - 4 + 2 faces; Chaikin's point

@@ -227,9 +227,57 @@ void write_stl(const Surface& triangles, std::ostream& out, bool binary, const s
     out << "endsolid cgal-subdiv\n";
 }
 
+// OBJ: the points (v), the texture coordinates if the mesh has them (vt,
+// numbered in the order of the first corner that uses them, so that a value
+// no corner uses is left out), the faces (f v or f v/vt) and, with `tags`,
+// the tag lines; vertices and faces numbered in the mesh's order, as the tag
+// lines number them (from 0 there)
+void write_obj(const Surface& mesh, std::ostream& out, const Sharp_options* tags,
+               CGAL::Subdiv::Face_varying_interpolation face_varying)
+{
+  out.precision(17);
+  out << "# cgal-subdiv: " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n";
+  for(const Surface::Vertex_index v : mesh.vertices()) {
+    const Point_3& p = mesh.point(v);
+    out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  const bool textured = has_texture_points(mesh);
+  std::vector<std::size_t> number_of_index; // the vt number of each texture index, from 1 (0: not yet written)
+  if(textured) {
+    const Texture_point_map values =
+      mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first;
+    const Texture_index_map indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first;
+    std::size_t written = 0;
+    for(const Surface::Face_index f : mesh.faces())
+      for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+        if(indices[h] >= number_of_index.size())
+          number_of_index.resize(indices[h] + 1, 0);
+        if(number_of_index[indices[h]] == 0) {
+          number_of_index[indices[h]] = ++written;
+          out << "vt " << values[h].x() << ' ' << values[h].y() << '\n';
+        }
+      }
+  }
+  const auto indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name);
+  for(const Surface::Face_index f : mesh.faces()) {
+    out << 'f';
+    for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      out << ' ' << mesh.target(h).idx() + 1;
+      if(textured)
+        out << '/' << number_of_index[indices.first[h]];
+    }
+    out << '\n';
+  }
+  if(tags != nullptr)
+    write_obj_tags(out, mesh, *tags);
+  if(textured)
+    write_obj_face_varying_tag(out, face_varying);
+}
+
 } // namespace
 
-void write_surface(const Surface& mesh, const std::string& path, bool binary, const Sharp_options* tags)
+void write_surface(const Surface& mesh, const std::string& path, bool binary, const Sharp_options* tags,
+                   CGAL::Subdiv::Face_varying_interpolation face_varying)
 {
   const Mesh_format format = mesh_format(path, "OUTPUT");
   if(binary && format != Mesh_format::ply && format != Mesh_format::stl)
@@ -248,9 +296,7 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary, co
         ok = CGAL::IO::write_OFF(out, drawn, np);
         break;
       case Mesh_format::obj: // the holes stay, tagged
-        ok = CGAL::IO::write_OBJ(out, mesh, np);
-        if(ok && tags != nullptr)
-          write_obj_tags(out, mesh, *tags);
+        write_obj(mesh, out, tags, face_varying);
         break;
       case Mesh_format::ply:
         if(binary)

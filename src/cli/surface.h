@@ -48,6 +48,10 @@ struct Surface_scheme
   /// whether --limit and --displace take the tags too (not for doo-sabin:
   /// `internal::Limit_takes_sharpness_tags`)
   bool limit_sharp = true;
+  /// whether `run_sharp` carries the texture coordinates of the mesh
+  /// (surface_from_soup.h) with their seams, in the mode of the options: the
+  /// schemes that split edges (not doo-sabin and the sqrt3 schemes)
+  bool carries_texture_points = false;
 };
 
 /// every scheme this build offers, in the order of --help
@@ -124,9 +128,12 @@ void check_finite_result(const Surface& result, const std::string& what, const s
 /// floats), under a temporary name renamed at the end;
 /// \throws Input_error, or Usage_error for `binary` with OFF or OBJ
 /// writes `mesh` (with `tags`, an OBJ file also gets the sharpness maps and
-/// the options as OpenSubdiv's tag lines)
-void write_surface(const Surface& mesh, const std::string& path, bool binary = false,
-                   const Sharp_options* tags = nullptr);
+/// the options as OpenSubdiv's tag lines; the texture coordinates of a mesh
+/// that has them go to an OBJ file as vt lines with their seams, and
+/// `face_varying` as the tag `t facevaryinginterpolateboundary`)
+void write_surface(
+  const Surface& mesh, const std::string& path, bool binary = false, const Sharp_options* tags = nullptr,
+  CGAL::Subdiv::Face_varying_interpolation face_varying = CGAL::Subdiv::Face_varying_interpolation::corners_plus1);
 
 /// one line of progress: level (1-based), mesh after it, seconds since start
 using Level_callback = std::function<void(int level, const Mesh_counts& counts, double seconds)>;

@@ -59,12 +59,39 @@ void apply_sharp_angle(const Parsed_args& args, Surface& mesh, Sharp_options& op
   options.present = true;
 }
 
+// whether the texture coordinates of `mesh` (an OBJ file's vt) are carried
+// to OUTPUT: they are removed, with a note, where they cannot be
+bool keep_texture_points(Surface& mesh, const Surface_scheme& scheme, const Parsed_args& args,
+                         Mesh_format output_format, const std::string& input, std::vector<std::string>& notes)
+{
+  if(!has_texture_points(mesh)) {
+    if(args.has("--fvar"))
+      notes.push_back("--fvar: '" + input + "' has no texture coordinates (vt referenced by every face) to carry");
+    return false;
+  }
+  std::string why;
+  if(!scheme.carries_texture_points || !scheme.run_sharp)
+    why = "--scheme " + scheme.name +
+          " does not carry them (it makes faces across the old edges; loop, loop-warren, catmull-clark, linear "
+          "and the butterflies do)";
+  else if(args.has("--displace"))
+    why = "--displace does not carry them yet";
+  else if(output_format != Mesh_format::obj)
+    why = "OUTPUT '" + args.value("-o") + "' is " + mesh_format_name(output_format) +
+          ", which holds none (write .obj to keep them)";
+  if(why.empty())
+    return true;
+  notes.push_back("left the texture coordinates (vt) of '" + input + "' out: " + why);
+  remove_texture_points(mesh);
+  return false;
+}
+
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
                            [--displace HEIGHTS] [--repair] [--split-non-manifold]
                            [--max-memory SIZE]
                            [--boundary MODE] [--crease-method METHOD]
                            [--smooth-triangles] [--sharp-angle DEGREES]
-                           [--binary] [--verbose]
+                           [--fvar MODE] [--binary] [--verbose]
 
 Refines the polygon mesh in INPUT with a surface subdivision scheme and writes
 the result to OUTPUT. One line on stdout sums it up: vertices (V), edges (E)
@@ -76,7 +103,10 @@ writing not included).
                         Surface_mesh<Simple_cartesian<double>::Point_3>. It must
                         be a manifold polygon mesh (borders allowed); if it is
                         not, the error names the edge or vertex at fault.
-                        Colours, normals and other properties are ignored.
+                        Colours, normals and other properties are ignored;
+                        the texture coordinates of an OBJ file (vt, when
+                        every face references them: f v/vt) are carried with
+                        their seams (see --fvar) to an OBJ OUTPUT.
                         OpenSubdiv's OBJ tags are read: t crease, t corner
                         (vertices from 0), t hole (faces from 0),
                         t interpolateboundary (RenderMan's numbers: 0 none,
@@ -135,6 +165,16 @@ const char* const surface_help_tail = R"(  --levels N            number of refin
                         edge whose two faces' normals make more than DEGREES
                         (0 to 180) becomes infinitely sharp (CGAL's
                         detect_sharp_edges), with the creases of INPUT
+  --fvar MODE           how the texture coordinates of an OBJ INPUT are
+                        refined, OpenSubdiv's face-varying modes: none (smooth
+                        everywhere, a seam refined as a border), corners-only,
+                        corners-plus1 (the default, as in USD), corners-plus2,
+                        boundaries, all (linear in every face). Default: the
+                        tags t facevaryinginterpolateboundary (0 to 5, in this
+                        order) and t facevaryingpropagatecorners of INPUT.
+                        loop, loop-warren, catmull-clark, linear and the
+                        butterflies carry them; with --limit they are those of
+                        the last level
   --max-memory SIZE     refuse, before any work, a run whose output would take
                         more memory than SIZE (default: this machine's memory),
                         e.g. 8G, 512MB, 2GiB; the estimate is the output faces
@@ -152,12 +192,22 @@ extension other than .off, .obj, .ply, .stl, missing -o, INPUT, --scheme or
 --levels). Errors are one line on stderr: "cgal-subdiv: error: ...".
 )";
 
-const std::vector<Option_spec> surface_options = {
-  {{"-o", "--output"}, true},      {{"--scheme"}, true},      {{"--levels"}, true},
-  {{"--repair"}, false},           {{"--limit"}, false},      {{"--displace"}, true},
-  {{"-v", "--verbose"}, false},    {{"-h", "--help"}, false}, {{"--max-memory"}, true},
-  {{"--binary"}, false},           {{"--boundary"}, true},    {{"--crease-method"}, true},
-  {{"--smooth-triangles"}, false}, {{"--sharp-angle"}, true}, {{"--split-non-manifold"}, false}};
+const std::vector<Option_spec> surface_options = {{{"-o", "--output"}, true},
+                                                  {{"--scheme"}, true},
+                                                  {{"--levels"}, true},
+                                                  {{"--repair"}, false},
+                                                  {{"--limit"}, false},
+                                                  {{"--displace"}, true},
+                                                  {{"-v", "--verbose"}, false},
+                                                  {{"-h", "--help"}, false},
+                                                  {{"--max-memory"}, true},
+                                                  {{"--binary"}, false},
+                                                  {{"--boundary"}, true},
+                                                  {{"--crease-method"}, true},
+                                                  {{"--smooth-triangles"}, false},
+                                                  {{"--sharp-angle"}, true},
+                                                  {{"--split-non-manifold"}, false},
+                                                  {{"--fvar"}, true}};
 
 // "  name   description" with the description wrapped at 80 columns
 std::string scheme_help_line(const std::string& name, const std::string& description)
@@ -262,6 +312,12 @@ int surface_command(const std::vector<std::string>& arguments)
   apply_sharp_angle(args, mesh, sharp_options, notes);
   sharp_options.present = sharp_options.present || has_sharpness(mesh); // the split's corners and creases
   const bool tagged = sharp_options.present;
+  if(args.has("--fvar"))
+    sharp_options.face_varying = face_varying_mode(args.value("--fvar"));
+  // the texture coordinates are carried by the refinement with tags (which
+  // takes the plain path when they are all zero, as they are then)
+  const bool textured = keep_texture_points(mesh, scheme, args, output_format, input, notes);
+  const Sharp_options* refine_options = tagged || textured ? &sharp_options : nullptr;
   if(tagged && !scheme.limit_sharp && (displace || args.has("--limit")))
     throw Input_error("--scheme " + scheme.name +
                       " refines with crease and corner tags, but its limit (--limit, --displace) does not take "
@@ -285,8 +341,8 @@ int surface_command(const std::vector<std::string>& arguments)
   if(displace) {
     result = displace_surface(mesh, scheme, levels, max_memory, heights, tagged ? &sharp_options : nullptr);
   } else {
-    result = subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback(),
-                               tagged ? &sharp_options : nullptr);
+    result =
+      subdivide_surface(mesh, scheme, levels, max_memory, by_level ? progress : Level_callback(), refine_options);
     if(args.has("--limit")) {
       const auto start = std::chrono::steady_clock::now();
       project_surface_to_limit(mesh, scheme, tagged ? &sharp_options : nullptr);
@@ -300,7 +356,7 @@ int surface_command(const std::vector<std::string>& arguments)
   check_finite_result(mesh, step, input, largest, file_numbers);
   if(talking)
     std::cerr << "cgal-subdiv: writing " << output << std::endl;
-  write_surface(mesh, output, args.has("--binary"), tagged ? &sharp_options : nullptr);
+  write_surface(mesh, output, args.has("--binary"), tagged ? &sharp_options : nullptr, sharp_options.face_varying);
 
   for(const std::string& note : notes)
     std::cerr << "cgal-subdiv: note: " << note << '\n';

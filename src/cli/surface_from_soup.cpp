@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Subdiv/split_non_manifold.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <iterator>
@@ -149,9 +150,10 @@ void to_cgal_soup(const Mesh_soup& soup, const std::string& path, std::size_t fi
 
 // the soup split by CGAL::Subdiv::split_non_manifold, with OpenSubdiv's
 // sharpness of its non-manifold edges and vertices in the tag maps
+// (`origin`: the point of every vertex of the mesh)
 Surface split_soup(const std::vector<Point>& points, const std::vector<Polygon>& polygons, const std::string& path,
                    std::vector<std::string>& notes, const std::vector<std::size_t>& file_numbers,
-                   std::vector<std::size_t>* file_numbers_out)
+                   std::vector<std::size_t>* file_numbers_out, std::vector<std::size_t>& origin)
 {
   Surface mesh;
   const auto edges = mesh.add_property_map<Surface::Edge_index, double>(edge_sharpness_name, 0).first;
@@ -175,6 +177,7 @@ Surface split_soup(const std::vector<Point>& points, const std::vector<Polygon>&
                   count(split.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") + " (" +
                   std::to_string(split.corners) + " made corners), " +
                   count(split.vertices.size() - points.size(), "vertex", "vertices") + " copied");
+  origin = split.origin;
   if(file_numbers_out) {
     file_numbers_out->clear();
     for(std::size_t origin : split.origin)
@@ -183,7 +186,43 @@ Surface split_soup(const std::vector<Point>& points, const std::vector<Polygon>&
   return mesh;
 }
 
+// the texture coordinates of the soup's corners in the maps of the mesh,
+// whose face f is polygon f, and whose vertex v is point origin[v]
+void add_texture_points(Surface& mesh, const Mesh_soup& soup, const std::vector<Polygon>& polygons,
+                        const std::vector<std::size_t>& origin)
+{
+  if(soup.texture_indices.empty())
+    return;
+  Texture_point_map values = mesh.add_property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first;
+  Texture_index_map indices = mesh.add_property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first;
+  for(const Surface::Face_index f : mesh.faces()) {
+    const Polygon& polygon = polygons[f.idx()];
+    for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      // the corner of the polygon at the halfedge's target (a face passes once through a point)
+      const std::size_t k =
+        static_cast<std::size_t>(std::find(polygon.begin(), polygon.end(), origin[mesh.target(h)]) - polygon.begin());
+      const std::size_t t = soup.texture_indices[soup.face_starts[f.idx()] + k];
+      values[h] = Texture_point(soup.texture_points[t][0], soup.texture_points[t][1]);
+      indices[h] = t;
+    }
+  }
+}
+
 } // namespace
+
+bool has_texture_points(const Surface& mesh)
+{
+  return mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).second &&
+         mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).second;
+}
+
+void remove_texture_points(Surface& mesh)
+{
+  if(auto values = mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name); values.second)
+    mesh.remove_property_map(values.first);
+  if(auto indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name); indices.second)
+    mesh.remove_property_map(indices.first);
+}
 
 Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_format format, Soup_fix fix,
                           std::vector<std::string>& notes, std::vector<std::size_t>* file_numbers_out)
@@ -194,9 +233,9 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     notes.push_back("ignored " + std::to_string(soup.tags.size()) +
                     (soup.tags.size() == 1 ? " tag line" : " tag lines") + " (t) of '" + path +
                     "': creases, corners and holes are not supported yet, the surface is refined smooth");
-  if(!soup.texture_indices.empty())
+  if(!soup.texture_indices.empty() && repair)
     notes.push_back("ignored the " + std::to_string(soup.texture_points.size()) + " texture coordinates (vt) of '" +
-                    path + "': the command line does not carry them yet (the library's Carried_data::corner_map does)");
+                    path + "': --repair reorders the faces they belong to");
   if(soup.number_of_faces() == 0)
     throw Input_error("'" + path + "' holds no faces");
   std::vector<Point> points;
@@ -212,8 +251,12 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
       throw Input_error("'" + path + "' holds no faces once repaired (every face was degenerate)");
   }
   const bool manifold = PMP::is_polygon_soup_a_polygon_mesh(polygons);
-  if(!manifold && fix == Soup_fix::split_non_manifold)
-    return split_soup(points, polygons, path, notes, file_numbers, file_numbers_out);
+  if(!manifold && fix == Soup_fix::split_non_manifold) {
+    std::vector<std::size_t> origin; // the point of every vertex of the mesh
+    Surface mesh = split_soup(points, polygons, path, notes, file_numbers, file_numbers_out, origin);
+    add_texture_points(mesh, soup, polygons, origin);
+    return mesh;
+  }
   if(!manifold) {
     const std::string problem = soup_problem(points, polygons, file_numbers);
     throw Input_error("'" + path + "' is not a manifold polygon mesh" + (problem.empty() ? "" : ": " + problem) +
@@ -229,6 +272,11 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
                     std::to_string(mesh.number_of_edges()) + " E, " + std::to_string(mesh.number_of_faces()) + " F");
   if(file_numbers_out) // polygon_soup_to_polygon_mesh makes vertex i of point i
     *file_numbers_out = std::move(file_numbers);
+  if(!repair) {
+    std::vector<std::size_t> origin(points.size());
+    std::iota(origin.begin(), origin.end(), std::size_t(0));
+    add_texture_points(mesh, soup, polygons, origin);
+  }
   return mesh;
 }
 

@@ -25,6 +25,22 @@ inline constexpr const char* edge_sharpness_name = "e:sharpness";
 inline constexpr const char* vertex_sharpness_name = "v:sharpness";
 inline constexpr const char* face_hole_name = "f:hole";
 
+/// the maps the texture coordinates of an OBJ file (`vt`, referenced by
+/// `f v/vt`) are kept in, per corner (the halfedge whose target is the
+/// corner's vertex, in its face): the value (u, v) and the index of the
+/// `vt` line (from 0). Two corners at a vertex with different indices are
+/// a seam; refinement carries both (`CGAL::Subdiv::Carried_data::corner_map`).
+using Texture_point = Double_kernel::Point_2;
+inline constexpr const char* texture_point_name = "h:uv";
+inline constexpr const char* texture_index_name = "h:uv_index";
+using Texture_point_map = Surface::Property_map<Surface::Halfedge_index, Texture_point>;
+using Texture_index_map = Surface::Property_map<Surface::Halfedge_index, std::size_t>;
+
+/// whether `mesh` has texture coordinates (both maps above)
+bool has_texture_points(const Surface& mesh);
+/// removes them (for the schemes and options that cannot carry them)
+void remove_texture_points(Surface& mesh);
+
 /// what is done with a soup that is not a manifold polygon mesh
 enum class Soup_fix {
   none,              ///< nothing: it is refused, naming the face, edge or vertex at fault
@@ -43,7 +59,9 @@ enum class Soup_fix {
  * note says so. `file_numbers`, if given, receives the number in the file
  * of every vertex of the mesh (OBJ counts from 1; the copies of a split
  * vertex have its number); empty with `repair`, which merges and splits
- * vertices.
+ * vertices. The texture coordinates of an OBJ file whose every face has
+ * them go to the maps `texture_point_name` and `texture_index_name`
+ * (not with `repair`, which reorders faces: a note says they were ignored).
  * \throws Input_error: no faces, or not a manifold polygon mesh (naming a
  *         face, an edge or a vertex: by its number in the file and its point)
  */

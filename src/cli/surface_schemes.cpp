@@ -5,6 +5,7 @@
 #include "surface.h"
 #include "surface_tags.h"
 
+#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -46,9 +47,20 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         {}};
   scheme.semi_sharp = SD::internal::Takes_semi_sharp_tags<Mask>::value;
   scheme.limit_sharp = SD::internal::Limit_takes_sharpness_tags<Mask>::value;
+  // the corner maps of Carried_data need a split of the edges (not the dual
+  // or sqrt3 splits)
+  scheme.carries_texture_points = Mask::split == SD::Split::quad || Mask::split == SD::Split::triangle_quadrisection;
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
-      const auto np = tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory);
+      // the texture coordinates, if any, with their seams (an empty
+      // Carried_data costs nothing: subdivide takes its plain path)
+      SD::Carried_data<Surface, double> texture;
+      if(has_texture_points(mesh))
+        texture.corner_map(mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first,
+                           options.face_varying,
+                           mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first);
+      const auto np =
+        tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory).carried_data(texture);
       if constexpr(is_linear_mask<Mask>) // the row of the quad mask, whose call picks the split
         SD::linear_subdivision(mesh, np);
       else

@@ -154,8 +154,24 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
   Sharp_options options;
   Tag_reader reader(mesh, file_vertices, file_numbers, path, semi_sharp_refused_by);
   std::size_t ignored = 0;
+  const Obj_tag* propagate_corners = nullptr;
   for(const Obj_tag& tag : tags) {
     const std::string at = where(path, tag);
+    if(tag.name == "facevaryinginterpolateboundary") { // not a tag of the geometry: `present` stays
+      require_one_value(tag, true, at);
+      if(tag.ints[0] < 0 || tag.ints[0] > 5)
+        throw Input_error(at + "is 0 (none), 1 (corners only), 2 (corners plus1), 3 (corners plus2), " +
+                          "4 (boundaries) or 5 (all), not " + std::to_string(tag.ints[0]));
+      options.face_varying = static_cast<CGAL::Subdiv::Face_varying_interpolation>(tag.ints[0]);
+      continue;
+    }
+    if(tag.name == "facevaryingpropagatecorners") {
+      require_one_value(tag, true, at);
+      if(tag.ints[0] != 0 && tag.ints[0] != 1)
+        throw Input_error(at + "is 0 or 1, not " + std::to_string(tag.ints[0]));
+      propagate_corners = tag.ints[0] == 1 ? &tag : nullptr;
+      continue;
+    }
     if(tag.name == "crease") {
       reader.crease(tag);
     } else if(tag.name == "corner") {
@@ -186,11 +202,48 @@ Sharp_options apply_obj_tags(const std::vector<Obj_tag>& tags, std::size_t file_
     }
     options.present = true;
   }
+  // Hbr's "propagate corners" went with its "edge and corner" mode only, which
+  // is corners plus1; with it, that is corners plus2 (OpenSubdiv's
+  // compatibility notes); with the other modes Hbr ignored it
+  using Fvar = CGAL::Subdiv::Face_varying_interpolation;
+  if(propagate_corners != nullptr && options.face_varying == Fvar::corners_plus1)
+    options.face_varying = Fvar::corners_plus2;
+  else if(propagate_corners != nullptr)
+    notes.push_back(where(path, *propagate_corners) + "ignored: it applies to facevaryinginterpolateboundary 2 " +
+                    "(corners plus1) only, which it makes corners plus2, and the mode is " +
+                    face_varying_keywords()[static_cast<std::size_t>(options.face_varying)]);
   if(ignored > 0)
     notes.push_back("ignored " + std::to_string(ignored) + (ignored == 1 ? " tag line" : " tag lines") + " of '" +
                     path +
-                    "' (only crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles are read)");
+                    "' (only crease, corner, hole, interpolateboundary, creasemethod, smoothtriangles, "
+                    "facevaryinginterpolateboundary and facevaryingpropagatecorners are read)");
   return options;
+}
+
+// the tag's numbers are the enum's order, as OpenSubdiv's are Sdc's
+static_assert(static_cast<int>(CGAL::Subdiv::Face_varying_interpolation::none) == 0 &&
+              static_cast<int>(CGAL::Subdiv::Face_varying_interpolation::all) == 5);
+
+const std::vector<std::string>& face_varying_keywords()
+{
+  static const std::vector<std::string> keywords = {"none",          "corners-only", "corners-plus1",
+                                                    "corners-plus2", "boundaries",   "all"};
+  return keywords;
+}
+
+CGAL::Subdiv::Face_varying_interpolation face_varying_mode(const std::string& keyword)
+{
+  const std::vector<std::string>& keywords = face_varying_keywords();
+  const auto found = std::find(keywords.begin(), keywords.end(), keyword);
+  if(found == keywords.end())
+    throw Usage_error("--fvar is none, corners-only, corners-plus1, corners-plus2, boundaries or all, not '" + keyword +
+                      "'");
+  return static_cast<CGAL::Subdiv::Face_varying_interpolation>(found - keywords.begin());
+}
+
+void write_obj_face_varying_tag(std::ostream& out, CGAL::Subdiv::Face_varying_interpolation mode)
+{
+  out << "t facevaryinginterpolateboundary 1/0/0 " << static_cast<int>(mode) << '\n';
 }
 
 std::size_t mark_sharp_angle(Surface& mesh, double angle_in_degrees)

@@ -14,6 +14,7 @@
 #include <CGAL/Subdiv/masks/Linear_quad_mask.h>
 #include <CGAL/Subdiv/masks/Linear_triangle_mask.h>
 #include <CGAL/Subdiv/parameters.h>
+#include <CGAL/Subdiv/refinement/Face_varying.h>
 #include <CGAL/Subdiv/views/Sharpness.h>
 #include <CGAL/Subdiv/views/Vertex_view.h>
 
@@ -36,7 +37,21 @@ struct Sharp_options
   CGAL::Subdiv::Triangle_subdivision triangles = CGAL::Subdiv::Triangle_subdivision::catmark;
   /// whether a tag was read (or an option of the command line set one)
   bool present = false;
+  /// how texture coordinates (face-varying data) are interpolated:
+  /// `t facevaryinginterpolateboundary` (OpenSubdiv's numbering, the order of
+  /// `Sdc::Options::FVarLinearInterpolation`: 0 none ... 5 all) and
+  /// `t facevaryingpropagatecorners 1` (corners plus1 becomes corners plus2,
+  /// as in Hbr), or --fvar; the default is USD's, corners plus1. Not a tag
+  /// of the geometry: it does not set `present`.
+  CGAL::Subdiv::Face_varying_interpolation face_varying = CGAL::Subdiv::Face_varying_interpolation::corners_plus1;
 };
+
+/// "none", "corners-only", "corners-plus1", "corners-plus2", "boundaries" or "all"
+/// (--fvar), in the order of OpenSubdiv's tag numbers
+const std::vector<std::string>& face_varying_keywords();
+/// the mode of a keyword of `face_varying_keywords`
+/// \throws Usage_error naming the keywords for any other
+CGAL::Subdiv::Face_varying_interpolation face_varying_mode(const std::string& keyword);
 
 /// a `Mask` with the options of `options`: the border corners of its
 /// boundary mode and, for Catmull-Clark, its triangle rule (the masks
@@ -92,7 +107,9 @@ auto tag_parameters(Surface& mesh, const Sharp_options& options)
  * Puts the sharpness of the `t crease` and `t corner` tags and the faces of
  * `t hole` in the maps of `mesh` (added when a tag needs them) and returns the
  * options of `t interpolateboundary`, `t creasemethod` and
- * `t smoothtriangles`; other tags are ignored, with a note. `file_numbers[v]` is the number in the file (from 1) of mesh vertex v;
+ * `t smoothtriangles`, and the face-varying mode of
+ * `t facevaryinginterpolateboundary` and `t facevaryingpropagatecorners`;
+ * other tags are ignored, with a note. `file_numbers[v]` is the number in the file (from 1) of mesh vertex v;
  * tags number vertices from 0, as OpenSubdiv's shapes do.
  * \throws Input_error naming `path` and the line: a malformed tag, a vertex
  *         out of range or in no face, a face out of range, a crease that is
@@ -121,6 +138,9 @@ std::optional<Surface> without_holes(const Surface& mesh);
 /// `t smoothtriangles`, `t crease`, `t corner`, `t hole`), vertices and faces
 /// numbered from 0 in the mesh's order (as the OBJ writer writes them)
 void write_obj_tags(std::ostream& out, const Surface& mesh, const Sharp_options& options);
+
+/// the tag line of the face-varying mode (`t facevaryinginterpolateboundary`)
+void write_obj_face_varying_tag(std::ostream& out, CGAL::Subdiv::Face_varying_interpolation mode);
 
 } // namespace cgal_subdiv
 
