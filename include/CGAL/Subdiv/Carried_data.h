@@ -201,6 +201,11 @@ public:
     return *this;
   }
 
+  /// whether the levels record the stencil of every new vertex (for the
+  /// vertex maps, whose values are combined with the weights of the points,
+  /// and then the points are too); corner and face data do without
+  bool records_vertex_stencils() const { return !m_vertex_channels.empty(); }
+
   bool empty() const
   {
     return m_vertex_channels.empty() && m_corner_channels.empty() && m_face_channels.empty() && m_origins == nullptr &&
@@ -224,7 +229,8 @@ public:
     template <class Host, class Mask>
     void read(const Host& host, const Mask& mask, const internal::Parallel_loop& loop)
     {
-      m_stencils.read(host, mask, loop);
+      if(m_data->records_vertex_stencils())
+        m_stencils.read(host, mask, loop);
       if(m_data->interpolates(Interpolation::linear) || m_data->wants_provenance())
         m_linear_stencils.read(host, linear_mask(mask), loop);
       if(m_data->m_origins != nullptr || m_data->wants_provenance() || !m_data->m_corner_channels.empty()) {

@@ -160,10 +160,13 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
   const auto refine_one = [&](const auto& level_mask, auto&... sinks) {
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal::carried_data_t>::value) {
       using Data = Carried_data<PolygonMesh, typename Mask::Number_type>;
-      if(carried) { // the points from the recorded stencils, as the data
+      if(carried) {
         typename Data::Level carried_level(*data, mesh);
-        const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried_level.stencils()};
-        internal::refine_level(mesh, level_mask, points, internal::Parallel_loop(1), carried_level, sinks...);
+        if(data->records_vertex_stencils()) { // the points from the recorded stencils, as the vertex data
+          const internal::Row_points<VPM, typename Data::Vertex_stencils> points{vpm, &carried_level.stencils()};
+          internal::refine_level(mesh, level_mask, points, internal::Parallel_loop(1), carried_level, sinks...);
+        } else // corner and face data only: the points of the plain path
+          internal::refine_level(mesh, level_mask, internal::Mask_points<VPM>{vpm}, loop, carried_level, sinks...);
         return;
       }
     }

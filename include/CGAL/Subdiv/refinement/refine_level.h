@@ -377,7 +377,13 @@ struct Stencil_recorder
   void read(const Host& host, const Mask& mask, const Parallel_loop&)
   {
     rows.assign(host.number_of_new_vertices(), typename decltype(rows)::value_type());
-    for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) { report(rows[j]); });
+    // room for the terms of a regular vertex of the quad split (9), so that
+    // most rows allocate once rather than doubling from one term
+    constexpr std::size_t usual_terms = 9;
+    for_each_new_vertex(host, mask, [&](std::size_t j, const auto& report) {
+      rows[j].reserve(usual_terms);
+      report(rows[j]);
+    });
   }
   template <class Level>
   void write(const Level&)

@@ -42,6 +42,9 @@ public:
     m_terms.emplace_back(source, weight);
   }
 
+  /// room for `n` terms, so that adding them allocates once
+  void reserve(std::size_t n) { m_terms.reserve(n); }
+
   const std::vector<Term>& terms() const { return m_terms; }
   typename std::vector<Term>::const_iterator begin() const { return m_terms.begin(); }
   typename std::vector<Term>::const_iterator end() const { return m_terms.end(); }
