@@ -34,6 +34,11 @@ struct Soup
   // empty for the smooth inputs
   std::vector<int> crease_pairs;
   std::vector<float> crease_sharpness;
+  // the texture coordinates (OpenSubdiv's face-varying channel): the values,
+  // and the value of every corner, index for index with `indices`; empty for
+  // the inputs without them
+  std::vector<std::array<double, 2>> uvs;
+  std::vector<int> uv_indices;
 };
 
 /// the soup as a mesh of any library whose `add_vertex(Point)` returns a

@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -237,6 +238,48 @@ void add_creases(const Mesh& mesh, Soup& soup)
     }
 }
 
+// box-projected texture coordinates with seams, the layout of many scanned
+// and CAD meshes: every face goes to the chart of the dominant axis of its
+// normal (and its sign), its corners at their other two coordinates; a
+// vertex has one value per chart around it, so an edge between two charts
+// is a seam
+void add_box_uvs(Mesh& mesh, Soup& soup)
+{
+  const auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>(uv_map_name).first;
+  const auto uv_index = mesh.add_property_map<Mesh::Halfedge_index, std::size_t>(uv_index_map_name).first;
+  std::vector<std::array<int, 6>> value_of(mesh.number_of_vertices(), {-1, -1, -1, -1, -1, -1});
+  for(const Mesh::Face_index f : mesh.faces()) {
+    double normal[3] = {0, 0, 0}; // Newell's
+    for(const Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h));
+      for(int i = 0; i < 3; ++i)
+        normal[i] += (a[(i + 1) % 3] - b[(i + 1) % 3]) * (a[(i + 2) % 3] + b[(i + 2) % 3]);
+    }
+    int axis = 0;
+    for(int i = 1; i < 3; ++i)
+      if(std::abs(normal[i]) > std::abs(normal[axis]))
+        axis = i;
+    const int chart = 2 * axis + (normal[axis] < 0 ? 1 : 0);
+    for(const Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const Mesh::Vertex_index v = mesh.target(h);
+      int& value = value_of[v.idx()][static_cast<std::size_t>(chart)];
+      const Point& p = mesh.point(v);
+      if(value < 0) {
+        value = static_cast<int>(soup.uvs.size());
+        soup.uvs.push_back({p[(axis + 1) % 3], p[(axis + 2) % 3]});
+      }
+      uv[h] = Kernel::Point_2(p[(axis + 1) % 3], p[(axis + 2) % 3]);
+      uv_index[h] = static_cast<std::size_t>(value);
+    }
+  }
+  // the corners in the soup's order (soup_of: the targets around each face)
+  for(const Mesh::Face_index f : mesh.faces())
+    for(const Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      soup.uv_indices.push_back(static_cast<int>(uv_index[h]));
+}
+
+const std::string textured_suffix = "-uv";
+
 } // namespace
 
 std::vector<std::string> input_ids()
@@ -246,6 +289,8 @@ std::vector<std::string> input_ids()
     ids.push_back(file.id);
   ids.push_back("fandisk-creased");
   ids.push_back("rook-creased");
+  ids.push_back("tri200k-uv");
+  ids.push_back("quad200k-uv");
   return ids;
 }
 
@@ -282,6 +327,16 @@ Soup soup_of(const Mesh& mesh)
 
 bool make_input(const std::string& id, bool quick, const std::string& mesh_dir, Input& input, std::string& why)
 {
+  const std::size_t suffix_at = id.size() > textured_suffix.size() ? id.size() - textured_suffix.size() : 0;
+  if(suffix_at > 0 && id.compare(suffix_at, std::string::npos, textured_suffix) == 0) {
+    if(!make_input(id.substr(0, suffix_at), quick, mesh_dir, input, why))
+      return false;
+    input.id = id;
+    add_box_uvs(input.mesh, input.soup);
+    input.textured = true;
+    input.name += ", " + thousands(input.soup.uvs.size()) + " box-projected UVs";
+    return true;
+  }
   input.id = id;
   Mesh& mesh = input.mesh;
   std::string kind;

@@ -28,15 +28,22 @@ struct Input
   Soup soup; // the same mesh as arrays (vertex and face order of `mesh`)
   bool triangles = false;
   bool border = false;
-  double diagonal = 1;  // of the bounding box, for relative differences
-  bool creased = false; // `mesh` has the map `crease_map_name`, `soup` its creases
+  double diagonal = 1;   // of the bounding box, for relative differences
+  bool creased = false;  // `mesh` has the map `crease_map_name`, `soup` its creases
+  bool textured = false; // `mesh` has the maps `uv_map_name`, `uv_index_map_name`, `soup` its uvs
 };
 
 /// the edge sharpness map of the creased inputs (OpenSubdiv's semantics)
 constexpr const char* crease_map_name = "e:sharpness";
+/// the per-corner texture coordinates of the textured inputs (`Kernel::Point_2`)
+/// and their value indices (`std::size_t`): halfedge maps, the value of face(h) at target(h)
+constexpr const char* uv_map_name = "h:uv";
+constexpr const char* uv_index_map_name = "h:uv_index";
 
 /// the ids of the inputs made in code, then of the files, then of the
-/// creased inputs, in table order
+/// creased inputs, then of the textured ones (an id ending in "-uv": the
+/// input of the id before it, with box-projected texture coordinates), in
+/// table order
 std::vector<std::string> input_ids();
 
 /// makes the input `id` (`quick`: 10x smaller generated inputs); false with

@@ -75,7 +75,7 @@ const char* peer_names[] = {"ours", "CGAL", "OpenMesh", "OSD Far"};
 
 Job_ptr refinement(Peer peer, const Input& input, Scheme scheme, int levels)
 {
-  if(input.creased && (peer == cgal || peer == openmesh)) // they have no creases
+  if((input.creased || input.textured) && (peer == cgal || peer == openmesh)) // they have no creases, no UVs
     return nullptr;
   switch(peer) {
     case ours:
@@ -403,6 +403,61 @@ void creased_refinement_section(const Options& options)
       const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
       row += seconds(r.t[osd]) + " | " + fixed(speedup) + " | " + fixed(speedup2) + " | " + points + " | " +
              check(speedup >= 1, "creased refinement >= 1x OSD, " + where, fixed(speedup) + "x") + " |";
+      out(row + "\n");
+    }
+  }
+}
+
+// --- with UVs (face-varying data, issue 12) ----------------------------------------
+
+const std::vector<Case> uv_plan = {
+  {Scheme::loop, "tri200k-uv", {1, 2}},
+  {Scheme::catmull_clark, "quad200k-uv", {1, 2}},
+};
+
+void uv_refinement_section(const Options& options)
+{
+  out(
+    "\n## Refinement with UVs (face-varying data)\n\n"
+    "Seconds, minimum of " +
+    std::to_string(options.runs) +
+    " runs after a warm-up, one thread. Each input with box-projected UVs: every face in the chart of the "
+    "dominant axis of its normal, so an edge between charts is a seam (a vertex has one UV value per chart "
+    "around it). Ours: `loop_subdivision` / `catmull_clark_subdivision` with a `Carried_data` "
+    "`corner_map(uv, corners_plus1, uv_index)` on a copy of the input `Surface_mesh`; OSD Far as above, with "
+    "the UVs as a face-varying channel in `FVAR_LINEAR_CORNERS_PLUS1`, "
+    "`PrimvarRefinerReal<double>::InterpolateFaceVarying` after `Interpolate` at every level. The same "
+    "input without UVs is timed in the same run: `UV cost` is the time with UVs minus the time without. "
+    "Targets (issue 12): ours with UVs at least as fast as OSD with UVs, and our UV cost no more than "
+    "OSD's.\n\n"
+    "| scheme | input | levels | output faces | ours | ours, UVs | OSD Far | OSD Far, UVs | OSD/ours, UVs | "
+    "UV cost ours | UV cost OSD | targets |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  for(const Case& c : uv_plan) {
+    const Input* textured = input(c.input);
+    const Input* plain = input(c.input.substr(0, c.input.size() - 3));
+    if(textured == nullptr || plain == nullptr)
+      continue;
+    for(const int levels : c.levels) {
+      Job_ptr jobs[4] = {ours_refinement(*plain, c.scheme, levels), ours_refinement(*textured, c.scheme, levels),
+                         osd_refinement(plain->soup, c.scheme, levels),
+                         osd_refinement(textured->soup, c.scheme, levels)};
+      const std::vector<double> t =
+        time_jobs({jobs[0].get(), jobs[1].get(), jobs[2].get(), jobs[3].get()}, options.runs);
+      std::string row = "| " + scheme_name(c.scheme) + " | " + textured->name + " | " + std::to_string(levels) + " | " +
+                        std::to_string(jobs[1]->output_faces()) + " | " + seconds(t[0]) + " | " + seconds(t[1]) + " | ";
+      if(!jobs[3]) {
+        out(row + "- | - | - | " + seconds(t[1] - t[0]) + " | - | |\n");
+        continue;
+      }
+      const double speedup = t[3] / t[1], cost_ours = t[1] - t[0], cost_osd = t[3] - t[2];
+      const std::string where =
+        scheme_name(c.scheme) + ", " + textured->name + ", " + std::to_string(levels) + " levels";
+      row +=
+        seconds(t[2]) + " | " + seconds(t[3]) + " | " + fixed(speedup) + " | " + seconds(cost_ours) + " | " +
+        seconds(cost_osd) + " | " +
+        check(speedup >= 1, "refinement with UVs >= 1x OSD, " + where, fixed(speedup) + "x") + " " +
+        check(cost_ours <= cost_osd, "UV cost <= OSD's, " + where, seconds(cost_ours) + " vs " + seconds(cost_osd)) +
+        " |";
       out(row + "\n");
     }
   }
@@ -905,7 +960,7 @@ int main(int argc, char** argv)
         "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the "
         "floor); SCHEME: Loop, "
         "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
-        "quad200k, mixed, border, fandisk, mushroom, spot, fandisk-creased, rook-creased.\n",
+        "quad200k, mixed, border, fandisk, mushroom, spot, fandisk-creased, rook-creased, tri200k-uv, quad200k-uv.\n",
         SUBDIV_BENCH_MESH_DIR);
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
@@ -980,6 +1035,7 @@ int main(int argc, char** argv)
   fresh_memory_section(options); // ends with set_heap(options.heap)
   refinement_section(options);
   creased_refinement_section(options);
+  uv_refinement_section(options);
   stencil_build_section(options);
   apply_section(options);
   if(options.memory)

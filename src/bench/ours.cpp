@@ -6,6 +6,7 @@
 #include "libraries.h"
 #include "threads_parameter.h"
 
+#include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
@@ -198,6 +199,20 @@ Job_ptr ours_refinement(const Input& input, Scheme scheme, int levels, int threa
   if(threads > 1 && !has_threads)
     return nullptr;
   const auto np = ours_parameters(levels, threads);
+  if(input.textured) { // carrying the UVs of the copy with their seams, in corners plus1 (as OSD below)
+    if(scheme != Scheme::loop && scheme != Scheme::catmull_clark)
+      return nullptr;
+    return mesh_job(input.mesh, [np, scheme](Mesh& m) {
+      CGAL::Subdiv::Carried_data<Mesh, double> uvs;
+      uvs.corner_map(m.property_map<Mesh::Halfedge_index, Kernel::Point_2>(uv_map_name).first,
+                     CGAL::Subdiv::Face_varying_interpolation::corners_plus1,
+                     m.property_map<Mesh::Halfedge_index, std::size_t>(uv_index_map_name).first);
+      if(scheme == Scheme::loop)
+        CGAL::Subdiv::loop_subdivision(m, np.carried_data(uvs));
+      else
+        CGAL::Subdiv::catmull_clark_subdivision(m, np.carried_data(uvs));
+    });
+  }
   if(input.creased) { // with the input's creases, which refine with the mesh (the copy's map)
     const auto creases = [](Mesh& m) { return m.property_map<Mesh::Edge_index, double>(crease_map_name).first; };
     if(scheme == Scheme::loop)

@@ -74,12 +74,34 @@ struct Vertex
   }
 };
 
-// the topology of a Soup as Far sees it (pointing into the Soup), and the options
+// a texture coordinate, the primvar of the face-varying channel
+struct Uv
+{
+  double p[2];
+  void Clear(void* = nullptr) { p[0] = p[1] = 0; }
+  void AddWithWeight(const Uv& source, double weight)
+  {
+    p[0] += weight * source.p[0];
+    p[1] += weight * source.p[1];
+  }
+};
+
+// the topology of a Soup as Far sees it (pointing into the Soup), and the
+// options; the UVs of a textured Soup are a face-varying channel in corners
+// plus1 (USD's default, and CGAL Subdiv's in the bench)
 class Topology
 {
 public:
   Topology(const Soup& soup, Scheme scheme)
   {
+    if(!soup.uvs.empty()) {
+      m_uv_channel.numValues = static_cast<int>(soup.uvs.size());
+      m_uv_channel.valueIndices = soup.uv_indices.data();
+      m_descriptor.numFVarChannels = 1;
+      m_descriptor.fvarChannels = &m_uv_channel;
+      for(const auto& uv : soup.uvs)
+        m_coarse_uvs.push_back(Uv{{uv[0], uv[1]}});
+    }
     m_descriptor.numVertices = static_cast<int>(soup.points.size());
     m_descriptor.numFaces = static_cast<int>(soup.face_sizes.size());
     m_descriptor.numVertsPerFace = soup.face_sizes.data();
@@ -90,6 +112,7 @@ public:
     Sdc::Options options;
     options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
     options.SetTriangleSubdivision(Sdc::Options::TRI_SUB_CATMARK);
+    options.SetFVarLinearInterpolation(Sdc::Options::FVAR_LINEAR_CORNERS_PLUS1);
     m_options = Factory::Options(scheme == Scheme::loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options);
     for(const P3& p : soup.points)
       m_coarse.push_back(Vertex{{p[0], p[1], p[2]}});
@@ -103,12 +126,16 @@ public:
   }
 
   const std::vector<Vertex>& coarse() const { return m_coarse; }
+  /// empty without UVs
+  const std::vector<Uv>& coarse_uvs() const { return m_coarse_uvs; }
 
 private:
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   Far::TopologyDescriptor m_descriptor;
+  Far::TopologyDescriptor::FVarChannel m_uv_channel;
   Factory::Options m_options;
   std::vector<Vertex> m_coarse;
+  std::vector<Uv> m_coarse_uvs;
 };
 
 template <class Real>
@@ -129,6 +156,7 @@ public:
   {
     m_refiner.reset();
     m_points = std::vector<Vertex>();
+    m_uvs = std::vector<Uv>();
   }
   void run() override
   {
@@ -142,6 +170,17 @@ public:
       primvar.Interpolate(level, source, destination);
       source = destination;
       destination += m_refiner->GetLevel(level).GetNumVertices();
+    }
+    if(m_topology.coarse_uvs().empty())
+      return;
+    m_uvs.resize(
+      static_cast<std::size_t>(m_refiner->GetNumFVarValuesTotal(0) - m_refiner->GetLevel(0).GetNumFVarValues(0)));
+    const Uv* uv_source = m_topology.coarse_uvs().data();
+    Uv* uv_destination = m_uvs.data();
+    for(int level = 1; level <= m_levels; ++level) {
+      primvar.InterpolateFaceVarying(level, uv_source, uv_destination);
+      uv_source = uv_destination;
+      uv_destination += m_refiner->GetLevel(level).GetNumFVarValues(0);
     }
   }
   std::size_t output_faces() const override
@@ -162,6 +201,7 @@ private:
   int m_levels;
   std::unique_ptr<Far::TopologyRefiner> m_refiner;
   std::vector<Vertex> m_points; // levels 1 to m_levels
+  std::vector<Uv> m_uvs;        // the same, with UVs
 };
 
 class Stencil_build_job : public Job
