@@ -74,6 +74,10 @@
  * \example carried_data.cpp
  * Carried data: a vertex scalar and a face label through two Loop levels.
  *
+ * \example uv_seams.cpp
+ * UVs with seams (a corner map in corners plus1), material ids and colours
+ * through two Catmull-Clark levels of a cube whose faces are texture islands.
+ *
  * \example stencil_table.cpp
  * Stencil re-evaluation: one table for three Loop levels, applied to moved
  * control points and compared with subdividing the moved mesh.
