@@ -201,6 +201,9 @@ void add_texture_points(Surface& mesh, const Mesh_soup& soup, const std::vector<
       // the corner of the polygon at the halfedge's target (a face passes once through a point)
       const std::size_t k =
         static_cast<std::size_t>(std::find(polygon.begin(), polygon.end(), origin[mesh.target(h)]) - polygon.begin());
+      if(k == polygon.size()) // face f is made of polygon f, whose points it keeps
+        throw Input_error("face " + std::to_string(f.idx()) +
+                          " of the mesh lost a point of its polygon (an internal error: please report it)");
       const std::size_t t = soup.texture_indices[soup.face_starts[f.idx()] + k];
       values[h] = Texture_point(soup.texture_points[t][0], soup.texture_points[t][1]);
       indices[h] = t;

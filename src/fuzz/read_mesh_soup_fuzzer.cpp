@@ -38,6 +38,17 @@ bool keeps_its_promises(const Mesh_soup& soup)
     for(double c : p)
       if(!std::isfinite(c))
         return false;
+  // texture coordinates: none, or one reference per corner, each in range,
+  // every value finite
+  if(!soup.texture_indices.empty() && soup.texture_indices.size() != soup.indices.size())
+    return false;
+  for(std::size_t index : soup.texture_indices)
+    if(index >= soup.texture_points.size())
+      return false;
+  for(const auto& t : soup.texture_points)
+    for(double c : t)
+      if(!std::isfinite(c))
+        return false;
   return true;
 }
 
