@@ -47,9 +47,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         {}};
   scheme.semi_sharp = SD::internal::Takes_semi_sharp_tags<Mask>::value;
   scheme.limit_sharp = SD::internal::Limit_takes_sharpness_tags<Mask>::value;
-  // the corner maps of Carried_data need a split of the edges (not the dual
-  // or sqrt3 splits)
-  scheme.carries_texture_points = Mask::split == SD::Split::quad || Mask::split == SD::Split::triangle_quadrisection;
+  scheme.carries_texture_points = SD::Carried_data<Surface, double>::carries_corner_maps<Mask>();
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       // the texture coordinates, if any, with their seams (an empty

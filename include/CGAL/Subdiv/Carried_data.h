@@ -329,16 +329,21 @@ public:
     m_provenance.base_pending = true;
   }
 
+  /// true if the scheme of `Mask` splits the old edges (Catmull-Clark, Loop,
+  /// the butterflies, linear): only such a scheme carries corner maps, vertex
+  /// maps with `Interpolation::linear` and the provenance maps
+  template <class Mask>
+  static constexpr bool carries_corner_maps()
+  {
+    return Mask::split == Split::quad || Mask::split == Split::triangle_quadrisection;
+  }
+
 private:
   // the linear scheme of the mask's split: see `Interpolation::linear`
   template <class Mask>
   static auto linear_mask(const Mask& mask)
   {
-    if constexpr(Mask::split == Split::quad)
-      return Linear_quad_mask<Mesh, FT>();
-    else if constexpr(Mask::split == Split::triangle_quadrisection)
-      return Linear_triangle_mask<Mesh, FT>();
-    else {
+    if constexpr(!carries_corner_maps<Mask>()) {
       internal::refuse(internal::Message()
                        << "Carried_data: vertex maps with Interpolation::linear, corner maps, face_origin_map and "
                           "base_origin_map need a scheme that splits edges (Catmull-Clark, Loop, the butterflies, "
@@ -347,7 +352,10 @@ private:
                        << " has none (it makes faces across the old edges): carry vertex maps with "
                           "Interpolation::smooth");
       return mask;
-    }
+    } else if constexpr(Mask::split == Split::quad)
+      return Linear_quad_mask<Mesh, FT>();
+    else
+      return Linear_triangle_mask<Mesh, FT>();
   }
 
   // the state of the provenance maps from level to level
