@@ -227,6 +227,26 @@ void write_stl(const Surface& triangles, std::ostream& out, bool binary, const s
     out << "endsolid cgal-subdiv\n";
 }
 
+// the vt lines of a textured mesh, numbered in the order of the first corner
+// that uses them; returns the vt number (from 1) of each texture index
+std::vector<std::size_t> write_obj_texture_points(const Surface& mesh, const Texture_index_map& indices,
+                                                  std::ostream& out)
+{
+  const Texture_point_map values = mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first;
+  std::vector<std::size_t> number_of_index; // 0: not yet written
+  std::size_t written = 0;
+  for(const Surface::Face_index f : mesh.faces())
+    for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      if(indices[h] >= number_of_index.size())
+        number_of_index.resize(indices[h] + 1, 0);
+      if(number_of_index[indices[h]] == 0) {
+        number_of_index[indices[h]] = ++written;
+        out << "vt " << values[h].x() << ' ' << values[h].y() << '\n';
+      }
+    }
+  return number_of_index;
+}
+
 // OBJ: the points (v), the texture coordinates if the mesh has them (vt,
 // numbered in the order of the first corner that uses them, so that a value
 // no corner uses is left out), the faces (f v or f v/vt) and, with `tags`,
@@ -242,29 +262,16 @@ void write_obj(const Surface& mesh, std::ostream& out, const Sharp_options* tags
     out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   }
   const bool textured = has_texture_points(mesh);
-  std::vector<std::size_t> number_of_index; // the vt number of each texture index, from 1 (0: not yet written)
-  if(textured) {
-    const Texture_point_map values =
-      mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first;
-    const Texture_index_map indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first;
-    std::size_t written = 0;
-    for(const Surface::Face_index f : mesh.faces())
-      for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
-        if(indices[h] >= number_of_index.size())
-          number_of_index.resize(indices[h] + 1, 0);
-        if(number_of_index[indices[h]] == 0) {
-          number_of_index[indices[h]] = ++written;
-          out << "vt " << values[h].x() << ' ' << values[h].y() << '\n';
-        }
-      }
-  }
-  const auto indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name);
+  const Texture_index_map indices =
+    textured ? mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first : Texture_index_map();
+  const std::vector<std::size_t> number_of_index =
+    textured ? write_obj_texture_points(mesh, indices, out) : std::vector<std::size_t>();
   for(const Surface::Face_index f : mesh.faces()) {
     out << 'f';
     for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       out << ' ' << mesh.target(h).idx() + 1;
       if(textured)
-        out << '/' << number_of_index[indices.first[h]];
+        out << '/' << number_of_index[indices[h]];
     }
     out << '\n';
   }
