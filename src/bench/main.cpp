@@ -121,6 +121,44 @@ struct Case
   std::vector<int> levels;
 };
 
+// one row of a table: a case of a plan at one number of levels
+struct Row_case
+{
+  const Case& c;
+  const Input& in;
+  int levels;
+
+  // the first cells of the row: "| scheme | input | levels |"
+  std::string cells() const
+  {
+    return "| " + scheme_name(c.scheme) + " | " + in.name + " | " + std::to_string(levels) + " |";
+  }
+  // the case in the words of the list of missed targets
+  std::string where() const
+  {
+    return scheme_name(c.scheme) + ", " + in.name + ", " + std::to_string(levels) + " levels";
+  }
+};
+
+// calls `row(Row_case)` for every number of levels of every case of `plan`
+// whose input this run has
+template <class Row>
+void for_each_row(const std::vector<Case>& plan, const Row& row)
+{
+  for(const Case& c : plan) {
+    const Input* in = input(c.input);
+    if(in != nullptr)
+      for(const int levels : c.levels)
+        row(Row_case{c, *in, levels});
+  }
+}
+
+// "Seconds, minimum of N runs", the first words of a timing table's text
+std::string minimum_of_runs(int runs)
+{
+  return "Seconds, minimum of " + std::to_string(runs) + " runs";
+}
+
 const std::vector<Case> refinement_plan = {
   {Scheme::loop, "tri20k", {1, 2, 3}},        {Scheme::loop, "tri200k", {1, 2}},
   {Scheme::loop, "border", {1, 2}},           {Scheme::loop, "fandisk", {1, 2, 3}},
@@ -243,107 +281,100 @@ Refinement_times time_refinement(const Input& in, Scheme scheme, int levels, int
 void refinement_section(const Options& options)
 {
   const bool two = ours_has_threads() && ours_with_tbb();
-  out(
-    "\n## Full refinement (topology + positions)\n\n"
-    "Seconds, minimum of " +
-    std::to_string(options.runs) +
-    " runs after a warm-up, one thread unless said. Ours and CGAL: `loop_subdivision` / "
-    "`catmull_clark_subdivision` / ... and `Subdivision_method_3` on a copy of the input `Surface_mesh`, "
-    "refined in place; `ours 2T`: ours with `CGAL::Subdiv::parameters::threads(2)`. OpenMesh: "
-    "`Subdivider::Uniform::LoopT` / `CatmullClarkT` on its own mesh (double points). OSD Far: "
-    "`TopologyRefinerFactory<TopologyDescriptor>::Create` + `RefineUniform` + "
-    "`PrimvarRefinerReal<double>::Interpolate` level by level into arrays: topology and positions, but no "
-    "halfedge mesh at the end (the others end with one); it has no multi-threaded refinement. `ours/best` = "
-    "our one-thread time / the fastest other library's; `OSD/ours` = how many times faster than OpenSubdiv we "
-    "are. Targets: OSD/ours at least 2 with one thread, at least 3 with two.\n\n"
-    "`SM resize`: the `Surface_mesh::reserve`/`resize` calls alone that a refinement of the mesh in place must "
-    "make (Loop, Catmull-Clark), on the same copy: `std::vector` value-initialises every new element, and "
-    "`add_vertex`/`add_edge`/`add_face` do too, so no refinement into a `Surface_mesh` through its public API "
-    "can take less. Where the 2x target is missed and `SM resize` alone is more than half of OSD's time, the "
-    "cell says `(floor)`: the target is out of reach for a `Surface_mesh` output (doc/profile.md: with g++ 12 "
-    "this fill runs at about 3 GB/s).\n\n"
-    "| scheme | input | levels | output faces | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | "
-    "ours/best | OSD/ours | OSD/ours 2T | target 2x OSD | target 3x OSD (2T) |\n"
-    "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
-  for(const Case& c : refinement_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    for(const int levels : c.levels) {
-      const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
-      const auto& jobs = r.jobs;
-      const Job_ptr &ours2 = r.ours2, &floor = r.floor;
-      const std::vector<double>& t = r.t;
-      const double t2 = r.two(), t_floor = r.resize();
-      double best = 1e300;
-      for(int p = 1; p < number_of_peers; ++p)
-        if(jobs[p])
-          best = std::min(best, t[static_cast<std::size_t>(p)]);
-      const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
-      std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                        std::to_string(jobs[ours]->output_faces()) + " | " + seconds(t[ours]) + " | " +
-                        (ours2 ? seconds(t2) : "-") + " |";
-      row += r.peer_and_floor_cells() + " " + fixed(t[ours] / best) + " |";
-      if(jobs[osd]) {
-        const double speedup = t[osd] / t[ours], speedup2 = ours2 ? t[osd] / t2 : nan_value;
-        const bool out_of_reach = floor && t_floor > t[osd] / 2;
-        const std::string reach = out_of_reach ? " (floor)" : "";
-        const std::string note = out_of_reach ? ", SM resize alone " + seconds(t_floor) + " s" : "";
-        row +=
-          " " + fixed(speedup) + " | " + fixed(speedup2) + " | " +
-          check(speedup >= 2, "full refinement >= 2x OSD, " + where, fixed(speedup) + "x" + note) + reach + " | " +
-          (ours2 ? check(speedup2 >= 3, "full refinement >= 3x OSD with 2 threads, " + where, fixed(speedup2) + "x")
-                 : std::string("**MISSED** (no 2T path)")) +
-          " |";
-      } else {
-        row += " - | - | | |";
-      }
-      // the face counts must agree
-      for(int p = 1; p < number_of_peers; ++p)
-        if(jobs[p] && jobs[p]->output_faces() != jobs[ours]->output_faces())
-          row += " (" + std::string(peer_names[p]) + ": " + std::to_string(jobs[p]->output_faces()) + " faces)";
-      if(ours2 && ours2->output_faces() != jobs[ours]->output_faces())
-        row += " (ours 2T: " + std::to_string(ours2->output_faces()) + " faces)";
-      out(row + "\n");
-      if(levels == c.levels.back()) {
-        if(c.scheme == Scheme::loop || c.scheme == Scheme::catmull_clark) {
-          Chart_group group{scheme_name(c.scheme) + ", " + short_name(*in) + ", " + std::to_string(levels) + " lv", {}};
-          const double faces = static_cast<double>(jobs[ours]->output_faces());
-          for(int p = 0; p < number_of_peers; ++p)
-            group.values.push_back(jobs[p] ? faces / t[static_cast<std::size_t>(p)] / 1e6 : nan_value);
-          if(two)
-            group.values.push_back(ours2 ? faces / t2 / 1e6 : nan_value);
-          chart.push_back(group);
-        }
-        // agreement of the points, at the last level of each case
-        Agreement_row a{scheme_name(c.scheme), in->name, levels, {}, false};
-        const std::vector<P3> mine = jobs[ours]->output_points();
-        for(int p = 1; p < number_of_peers; ++p) {
-          if(!jobs[p]) {
-            a.versus[p] = "-";
-            continue;
-          }
-          const std::vector<P3> theirs = jobs[p]->output_points();
-          const Agreement agreement = compare_points(mine, theirs, in->diagonal);
-          a.versus[p] = describe(agreement, mine.size(), theirs.size());
-          const bool bad = !agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12;
-          const std::string expected = known_difference(static_cast<Peer>(p), c.scheme, *in);
-          if(bad && !expected.empty()) {
-            a.versus[p] += " (expected: " + expected + ")";
-          } else if(bad) {
-            a.versus[p] = "**" + a.versus[p] + " DIFFER**";
-            a.flagged = true;
-          }
-        }
-        if(ours2) { // the same points with two threads, bit for bit
-          const std::vector<P3> mine2 = ours2->output_points();
-          a.same_with_two_threads = mine2 == mine ? "yes" : "**NO**";
-          a.flagged = a.flagged || mine2 != mine;
-        }
-        agreements.push_back(a);
-      }
+  out("\n## Full refinement (topology + positions)\n\n" + minimum_of_runs(options.runs) +
+      " after a warm-up, one thread unless said. Ours and CGAL: `loop_subdivision` / "
+      "`catmull_clark_subdivision` / ... and `Subdivision_method_3` on a copy of the input `Surface_mesh`, "
+      "refined in place; `ours 2T`: ours with `CGAL::Subdiv::parameters::threads(2)`. OpenMesh: "
+      "`Subdivider::Uniform::LoopT` / `CatmullClarkT` on its own mesh (double points). OSD Far: "
+      "`TopologyRefinerFactory<TopologyDescriptor>::Create` + `RefineUniform` + "
+      "`PrimvarRefinerReal<double>::Interpolate` level by level into arrays: topology and positions, but no "
+      "halfedge mesh at the end (the others end with one); it has no multi-threaded refinement. `ours/best` = "
+      "our one-thread time / the fastest other library's; `OSD/ours` = how many times faster than OpenSubdiv we "
+      "are. Targets: OSD/ours at least 2 with one thread, at least 3 with two.\n\n"
+      "`SM resize`: the `Surface_mesh::reserve`/`resize` calls alone that a refinement of the mesh in place must "
+      "make (Loop, Catmull-Clark), on the same copy: `std::vector` value-initialises every new element, and "
+      "`add_vertex`/`add_edge`/`add_face` do too, so no refinement into a `Surface_mesh` through its public API "
+      "can take less. Where the 2x target is missed and `SM resize` alone is more than half of OSD's time, the "
+      "cell says `(floor)`: the target is out of reach for a `Surface_mesh` output (doc/profile.md: with g++ 12 "
+      "this fill runs at about 3 GB/s).\n\n"
+      "| scheme | input | levels | output faces | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | "
+      "ours/best | OSD/ours | OSD/ours 2T | target 2x OSD | target 3x OSD (2T) |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  for_each_row(refinement_plan, [&](const Row_case& rc) {
+    const Case& c = rc.c;
+    const Input* in = &rc.in;
+    const int levels = rc.levels;
+    const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
+    const auto& jobs = r.jobs;
+    const Job_ptr &ours2 = r.ours2, &floor = r.floor;
+    const std::vector<double>& t = r.t;
+    const double t2 = r.two(), t_floor = r.resize();
+    double best = 1e300;
+    for(int p = 1; p < number_of_peers; ++p)
+      if(jobs[p])
+        best = std::min(best, t[static_cast<std::size_t>(p)]);
+    const std::string where = rc.where();
+    std::string row = rc.cells() + " " + std::to_string(jobs[ours]->output_faces()) + " | " + seconds(t[ours]) + " | " +
+                      (ours2 ? seconds(t2) : "-") + " |";
+    row += r.peer_and_floor_cells() + " " + fixed(t[ours] / best) + " |";
+    if(jobs[osd]) {
+      const double speedup = t[osd] / t[ours], speedup2 = ours2 ? t[osd] / t2 : nan_value;
+      const bool out_of_reach = floor && t_floor > t[osd] / 2;
+      const std::string reach = out_of_reach ? " (floor)" : "";
+      const std::string note = out_of_reach ? ", SM resize alone " + seconds(t_floor) + " s" : "";
+      row += " " + fixed(speedup) + " | " + fixed(speedup2) + " | " +
+             check(speedup >= 2, "full refinement >= 2x OSD, " + where, fixed(speedup) + "x" + note) + reach + " | " +
+             (ours2 ? check(speedup2 >= 3, "full refinement >= 3x OSD with 2 threads, " + where, fixed(speedup2) + "x")
+                    : std::string("**MISSED** (no 2T path)")) +
+             " |";
+    } else {
+      row += " - | - | | |";
     }
-  }
+    // the face counts must agree
+    for(int p = 1; p < number_of_peers; ++p)
+      if(jobs[p] && jobs[p]->output_faces() != jobs[ours]->output_faces())
+        row += " (" + std::string(peer_names[p]) + ": " + std::to_string(jobs[p]->output_faces()) + " faces)";
+    if(ours2 && ours2->output_faces() != jobs[ours]->output_faces())
+      row += " (ours 2T: " + std::to_string(ours2->output_faces()) + " faces)";
+    out(row + "\n");
+    if(levels == c.levels.back()) {
+      if(c.scheme == Scheme::loop || c.scheme == Scheme::catmull_clark) {
+        Chart_group group{scheme_name(c.scheme) + ", " + short_name(*in) + ", " + std::to_string(levels) + " lv", {}};
+        const double faces = static_cast<double>(jobs[ours]->output_faces());
+        for(int p = 0; p < number_of_peers; ++p)
+          group.values.push_back(jobs[p] ? faces / t[static_cast<std::size_t>(p)] / 1e6 : nan_value);
+        if(two)
+          group.values.push_back(ours2 ? faces / t2 / 1e6 : nan_value);
+        chart.push_back(group);
+      }
+      // agreement of the points, at the last level of each case
+      Agreement_row a{scheme_name(c.scheme), in->name, levels, {}, false};
+      const std::vector<P3> mine = jobs[ours]->output_points();
+      for(int p = 1; p < number_of_peers; ++p) {
+        if(!jobs[p]) {
+          a.versus[p] = "-";
+          continue;
+        }
+        const std::vector<P3> theirs = jobs[p]->output_points();
+        const Agreement agreement = compare_points(mine, theirs, in->diagonal);
+        a.versus[p] = describe(agreement, mine.size(), theirs.size());
+        const bool bad = !agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12;
+        const std::string expected = known_difference(static_cast<Peer>(p), c.scheme, *in);
+        if(bad && !expected.empty()) {
+          a.versus[p] += " (expected: " + expected + ")";
+        } else if(bad) {
+          a.versus[p] = "**" + a.versus[p] + " DIFFER**";
+          a.flagged = true;
+        }
+      }
+      if(ours2) { // the same points with two threads, bit for bit
+        const std::vector<P3> mine2 = ours2->output_points();
+        a.same_with_two_threads = mine2 == mine ? "yes" : "**NO**";
+        a.flagged = a.flagged || mine2 != mine;
+      }
+      agreements.push_back(a);
+    }
+  });
   if(!two) {
     out(
       "\nTarget \"at least 3x faster than OSD Far with 2 threads\": **MISSED** on every row: this build of CGAL "
@@ -363,49 +394,39 @@ const std::vector<Case> crease_plan = {
 
 void creased_refinement_section(const Options& options)
 {
-  out(
-    "\n## Refinement with creases\n\n"
-    "Seconds, minimum of " +
-    std::to_string(options.runs) +
-    " runs after a warm-up. Ours: `loop_subdivision` / `catmull_clark_subdivision` with "
-    "`edge_sharpness_map` on a copy of the input `Surface_mesh` (the map refines with the mesh: the children's "
-    "sharpness is written back); OSD Far as above, with the same creases as `TopologyDescriptor` crease "
-    "pairs and weights. CGAL and OpenMesh have no creases. `fandisk-creased`: infinitely sharp creases from "
-    "`mark_sharp_edges` (30 degrees); `rook-creased`: semi-sharp creases of OpenSubdiv's own shape, refined "
-    "first. `points`: the largest distance to OSD's nearest point over the bounding-box diagonal. Target "
-    "(issue 11): at least as fast as OSD Far.\n\n"
-    "| scheme | input | levels | output faces | creases | ours | ours 2T | OSD Far | OSD/ours | OSD/ours 2T | "
-    "points vs OSD | target 1x OSD |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
-  for(const Case& c : crease_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    for(const int levels : c.levels) {
-      const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
-      const Job_ptr& mine = r.jobs[ours];
-      const Job_ptr& theirs = r.jobs[osd];
-      std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                        std::to_string(mine->output_faces()) + " | " +
-                        std::to_string(in->soup.crease_sharpness.size()) + " | " + seconds(r.t[ours]) + " | " +
-                        (r.ours2 ? seconds(r.two()) : "-") + " | ";
-      if(!theirs) {
-        out(row + "- | - | - | - | |\n");
-        continue;
-      }
-      const double speedup = r.t[osd] / r.t[ours], speedup2 = r.ours2 ? r.t[osd] / r.two() : nan_value;
-      const std::vector<P3> ours_points = mine->output_points(), osd_points = theirs->output_points();
-      const Agreement agreement = compare_points(ours_points, osd_points, in->diagonal);
-      std::string points = describe(agreement, ours_points.size(), osd_points.size());
-      if(!agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12)
-        points = "**" + points + " DIFFER**";
-      if(r.ours2 && r.ours2->output_points() != ours_points) // two threads: the same bits
-        points += " **(ours 2T differs from ours 1T)**";
-      const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
-      row += seconds(r.t[osd]) + " | " + fixed(speedup) + " | " + fixed(speedup2) + " | " + points + " | " +
-             check(speedup >= 1, "creased refinement >= 1x OSD, " + where, fixed(speedup) + "x") + " |";
-      out(row + "\n");
+  out("\n## Refinement with creases\n\n" + minimum_of_runs(options.runs) +
+      " after a warm-up. Ours: `loop_subdivision` / `catmull_clark_subdivision` with "
+      "`edge_sharpness_map` on a copy of the input `Surface_mesh` (the map refines with the mesh: the children's "
+      "sharpness is written back); OSD Far as above, with the same creases as `TopologyDescriptor` crease "
+      "pairs and weights. CGAL and OpenMesh have no creases. `fandisk-creased`: infinitely sharp creases from "
+      "`mark_sharp_edges` (30 degrees); `rook-creased`: semi-sharp creases of OpenSubdiv's own shape, refined "
+      "first. `points`: the largest distance to OSD's nearest point over the bounding-box diagonal. Target "
+      "(issue 11): at least as fast as OSD Far.\n\n"
+      "| scheme | input | levels | output faces | creases | ours | ours 2T | OSD Far | OSD/ours | OSD/ours 2T | "
+      "points vs OSD | target 1x OSD |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  for_each_row(crease_plan, [&](const Row_case& rc) {
+    const Refinement_times r = time_refinement(rc.in, rc.c.scheme, rc.levels, options.runs);
+    const Job_ptr& mine = r.jobs[ours];
+    const Job_ptr& theirs = r.jobs[osd];
+    std::string row = rc.cells() + " " + std::to_string(mine->output_faces()) + " | " +
+                      std::to_string(rc.in.soup.crease_sharpness.size()) + " | " + seconds(r.t[ours]) + " | " +
+                      (r.ours2 ? seconds(r.two()) : "-") + " | ";
+    if(!theirs) {
+      out(row + "- | - | - | - | |\n");
+      return;
     }
-  }
+    const double speedup = r.t[osd] / r.t[ours], speedup2 = r.ours2 ? r.t[osd] / r.two() : nan_value;
+    const std::vector<P3> ours_points = mine->output_points(), osd_points = theirs->output_points();
+    const Agreement agreement = compare_points(ours_points, osd_points, rc.in.diagonal);
+    std::string points = describe(agreement, ours_points.size(), osd_points.size());
+    if(!agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12)
+      points = "**" + points + " DIFFER**";
+    if(r.ours2 && r.ours2->output_points() != ours_points) // two threads: the same bits
+      points += " **(ours 2T differs from ours 1T)**";
+    row += seconds(r.t[osd]) + " | " + fixed(speedup) + " | " + fixed(speedup2) + " | " + points + " | " +
+           check(speedup >= 1, "creased refinement >= 1x OSD, " + rc.where(), fixed(speedup) + "x") + " |";
+    out(row + "\n");
+  });
 }
 
 // --- with UVs (face-varying data, issue 12) ----------------------------------------
@@ -417,50 +438,41 @@ const std::vector<Case> uv_plan = {
 
 void uv_refinement_section(const Options& options)
 {
-  out(
-    "\n## Refinement with UVs (face-varying data)\n\n"
-    "Seconds, minimum of " +
-    std::to_string(options.runs) +
-    " runs after a warm-up, one thread. Each input with box-projected UVs: every face in the chart of the "
-    "dominant axis of its normal, so an edge between charts is a seam (a vertex has one UV value per chart "
-    "around it). Ours: `loop_subdivision` / `catmull_clark_subdivision` with a `Carried_data` "
-    "`corner_map(uv, corners_plus1, uv_index)` on a copy of the input `Surface_mesh`; OSD Far as above, with "
-    "the UVs as a face-varying channel in `FVAR_LINEAR_CORNERS_PLUS1`, "
-    "`PrimvarRefinerReal<double>::InterpolateFaceVarying` after `Interpolate` at every level. The same "
-    "input without UVs is timed in the same run: `UV cost` is the time with UVs minus the time without. "
-    "Targets (issue 12): ours with UVs at least as fast as OSD with UVs, and our UV cost no more than "
-    "OSD's.\n\n"
-    "| scheme | input | levels | output faces | ours | ours, UVs | OSD Far | OSD Far, UVs | OSD/ours, UVs | "
-    "UV cost ours | UV cost OSD | targets |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-  for(const Case& c : uv_plan) {
-    const Input* textured = input(c.input);
-    const Input* plain = input(c.input.substr(0, c.input.size() - 3));
-    if(textured == nullptr || plain == nullptr)
-      continue;
-    for(const int levels : c.levels) {
-      Job_ptr jobs[4] = {ours_refinement(*plain, c.scheme, levels), ours_refinement(*textured, c.scheme, levels),
-                         osd_refinement(plain->soup, c.scheme, levels),
-                         osd_refinement(textured->soup, c.scheme, levels)};
-      const std::vector<double> t =
-        time_jobs({jobs[0].get(), jobs[1].get(), jobs[2].get(), jobs[3].get()}, options.runs);
-      std::string row = "| " + scheme_name(c.scheme) + " | " + textured->name + " | " + std::to_string(levels) + " | " +
-                        std::to_string(jobs[1]->output_faces()) + " | " + seconds(t[0]) + " | " + seconds(t[1]) + " | ";
-      if(!jobs[3]) {
-        out(row + "- | - | - | " + seconds(t[1] - t[0]) + " | - | |\n");
-        continue;
-      }
-      const double speedup = t[3] / t[1], cost_ours = t[1] - t[0], cost_osd = t[3] - t[2];
-      const std::string where =
-        scheme_name(c.scheme) + ", " + textured->name + ", " + std::to_string(levels) + " levels";
-      row +=
-        seconds(t[2]) + " | " + seconds(t[3]) + " | " + fixed(speedup) + " | " + seconds(cost_ours) + " | " +
-        seconds(cost_osd) + " | " +
-        check(speedup >= 1, "refinement with UVs >= 1x OSD, " + where, fixed(speedup) + "x") + " " +
-        check(cost_ours <= cost_osd, "UV cost <= OSD's, " + where, seconds(cost_ours) + " vs " + seconds(cost_osd)) +
-        " |";
-      out(row + "\n");
+  out("\n## Refinement with UVs (face-varying data)\n\n" + minimum_of_runs(options.runs) +
+      " after a warm-up, one thread. Each input with box-projected UVs: every face in the chart of the "
+      "dominant axis of its normal, so an edge between charts is a seam (a vertex has one UV value per chart "
+      "around it). Ours: `loop_subdivision` / `catmull_clark_subdivision` with a `Carried_data` "
+      "`corner_map(uv, corners_plus1, uv_index)` on a copy of the input `Surface_mesh`; OSD Far as above, with "
+      "the UVs as a face-varying channel in `FVAR_LINEAR_CORNERS_PLUS1`, "
+      "`PrimvarRefinerReal<double>::InterpolateFaceVarying` after `Interpolate` at every level. The same "
+      "input without UVs is timed in the same run: `UV cost` is the time with UVs minus the time without. "
+      "Targets (issue 12): ours with UVs at least as fast as OSD with UVs, and our UV cost no more than "
+      "OSD's.\n\n"
+      "| scheme | input | levels | output faces | ours | ours, UVs | OSD Far | OSD Far, UVs | OSD/ours, UVs | "
+      "UV cost ours | UV cost OSD | targets |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  for_each_row(uv_plan, [&](const Row_case& rc) {
+    const Input* plain = input(rc.c.input.substr(0, rc.c.input.size() - 3)); // without "-uv"
+    if(plain == nullptr)
+      return;
+    const Scheme scheme = rc.c.scheme;
+    Job_ptr jobs[4] = {ours_refinement(*plain, scheme, rc.levels), ours_refinement(rc.in, scheme, rc.levels),
+                       osd_refinement(plain->soup, scheme, rc.levels), osd_refinement(rc.in.soup, scheme, rc.levels)};
+    const std::vector<double> t = time_jobs({jobs[0].get(), jobs[1].get(), jobs[2].get(), jobs[3].get()}, options.runs);
+    std::string row = rc.cells() + " " + std::to_string(jobs[1]->output_faces()) + " | " + seconds(t[0]) + " | " +
+                      seconds(t[1]) + " | ";
+    if(!jobs[3]) {
+      out(row + "- | - | - | " + seconds(t[1] - t[0]) + " | - | |\n");
+      return;
     }
-  }
+    const double speedup = t[3] / t[1], cost_ours = t[1] - t[0], cost_osd = t[3] - t[2];
+    row +=
+      seconds(t[2]) + " | " + seconds(t[3]) + " | " + fixed(speedup) + " | " + seconds(cost_ours) + " | " +
+      seconds(cost_osd) + " | " +
+      check(speedup >= 1, "refinement with UVs >= 1x OSD, " + rc.where(), fixed(speedup) + "x") + " " +
+      check(cost_ours <= cost_osd, "UV cost <= OSD's, " + rc.where(), seconds(cost_ours) + " vs " + seconds(cost_osd)) +
+      " |";
+    out(row + "\n");
+  });
 }
 
 // --- the same refinements, each run in fresh memory -----------------------------
@@ -484,19 +496,14 @@ void fresh_memory_section(const Options& options)
     "in the next table.\n\n"
     "| scheme | input | levels | ours | ours 2T | CGAL | OpenMesh | OSD Far | SM resize | OSD/ours | OSD/ours 2T "
     "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  for(const Case& c : fresh_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    const int levels = c.levels.front();
-    const Refinement_times r = time_refinement(*in, c.scheme, levels, options.runs);
+  for_each_row(fresh_plan, [&](const Row_case& rc) {
+    const Refinement_times r = time_refinement(rc.in, rc.c.scheme, rc.levels, options.runs);
     const std::vector<double>& t = r.t;
-    std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                      seconds(t[ours]) + " | " + (r.ours2 ? seconds(r.two()) : "-") + " |" + r.peer_and_floor_cells() +
-                      " " + (r.jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) + " | " +
-                      (r.jobs[osd] && r.ours2 ? fixed(t[osd] / r.two()) : std::string("-")) + " |";
+    std::string row = rc.cells() + " " + seconds(t[ours]) + " | " + (r.ours2 ? seconds(r.two()) : "-") + " |" +
+                      r.peer_and_floor_cells() + " " + (r.jobs[osd] ? fixed(t[osd] / t[ours]) : std::string("-")) +
+                      " | " + (r.jobs[osd] && r.ours2 ? fixed(t[osd] / r.two()) : std::string("-")) + " |";
     out(row + "\n");
-  }
+  });
   set_heap(options.heap);
 }
 
@@ -504,46 +511,38 @@ void fresh_memory_section(const Options& options)
 
 void stencil_build_section(const Options& options)
 {
-  out(
-    "\n## Stencil table build\n\n"
-    "Seconds, minimum of " +
-    std::to_string(options.runs) +
-    " runs. Ours: `make_stencil_table(mesh, mask, parameters::number_of_iterations(levels))` (the refined topology and "
-    "one composed table from "
-    "the coarse points to the finest ones, input check included). OSD: `StencilTableFactoryReal<double>::Create` "
-    "on a uniformly refined `TopologyRefiner` (generateIntermediateLevels = false, "
-    "factorizeIntermediateLevels = true, generateOffsets = true), timed with the refiner's creation and "
-    "`RefineUniform` (`OSD r+f`, like for like with ours) and alone (`OSD factory`, the refiner made outside "
-    "the timer). `ours 2T`: ours with `threads(2)`, for information (OpenSubdiv's factory has one thread). "
-    "Target: ours (one thread) at least 5x faster than the factory.\n\n"
-    "| scheme | input | levels | ours | ours 2T | OSD r+f | OSD factory | OSD r+f / ours | OSD factory / ours | "
-    "target 5x (r+f) | target 5x (factory alone) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
-  for(const Case& c : stencil_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    for(const int levels : c.levels) {
-      Job_ptr mine = ours_stencil_build(*in, c.scheme, levels, 1);
-      Job_ptr both = osd_stencil_build(in->soup, c.scheme, levels, false);
-      Job_ptr factory = osd_stencil_build(in->soup, c.scheme, levels, true);
-      Job_ptr mine2 = ours_has_threads() && ours_with_tbb() ? ours_stencil_build(*in, c.scheme, levels, 2) : nullptr;
-      const std::vector<double> t = time_jobs({mine.get(), both.get(), factory.get(), mine2.get()}, options.runs);
-      std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-                        seconds(t[0]) + " | " + (mine2 ? seconds(t[3]) : "-") + " | " + (both ? seconds(t[1]) : "-") +
-                        " | " + (factory ? seconds(t[2]) : "-") + " |";
-      if(both && factory) {
-        const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
-        row += " " + fixed(t[1] / t[0]) + " | " + fixed(t[2] / t[0]) + " | " +
-               check(t[1] / t[0] >= 5, "stencil build >= 5x OSD refine+factory, " + where, fixed(t[1] / t[0]) + "x") +
-               " | " +
-               check(t[2] / t[0] >= 5, "stencil build >= 5x OSD factory alone, " + where, fixed(t[2] / t[0]) + "x") +
-               " |";
-      } else {
-        row += " - | - | | |";
-      }
-      out(row + "\n");
+  out("\n## Stencil table build\n\n" + minimum_of_runs(options.runs) +
+      ". Ours: `make_stencil_table(mesh, mask, parameters::number_of_iterations(levels))` (the refined topology and "
+      "one composed table from "
+      "the coarse points to the finest ones, input check included). OSD: `StencilTableFactoryReal<double>::Create` "
+      "on a uniformly refined `TopologyRefiner` (generateIntermediateLevels = false, "
+      "factorizeIntermediateLevels = true, generateOffsets = true), timed with the refiner's creation and "
+      "`RefineUniform` (`OSD r+f`, like for like with ours) and alone (`OSD factory`, the refiner made outside "
+      "the timer). `ours 2T`: ours with `threads(2)`, for information (OpenSubdiv's factory has one thread). "
+      "Target: ours (one thread) at least 5x faster than the factory.\n\n"
+      "| scheme | input | levels | ours | ours 2T | OSD r+f | OSD factory | OSD r+f / ours | OSD factory / ours | "
+      "target 5x (r+f) | target 5x (factory alone) |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
+  for_each_row(stencil_plan, [&](const Row_case& rc) {
+    const Scheme scheme = rc.c.scheme;
+    const int levels = rc.levels;
+    Job_ptr mine = ours_stencil_build(rc.in, scheme, levels, 1);
+    Job_ptr both = osd_stencil_build(rc.in.soup, scheme, levels, false);
+    Job_ptr factory = osd_stencil_build(rc.in.soup, scheme, levels, true);
+    Job_ptr mine2 = ours_has_threads() && ours_with_tbb() ? ours_stencil_build(rc.in, scheme, levels, 2) : nullptr;
+    const std::vector<double> t = time_jobs({mine.get(), both.get(), factory.get(), mine2.get()}, options.runs);
+    std::string row = rc.cells() + " " + seconds(t[0]) + " | " + (mine2 ? seconds(t[3]) : "-") + " | " +
+                      (both ? seconds(t[1]) : "-") + " | " + (factory ? seconds(t[2]) : "-") + " |";
+    if(both && factory) {
+      const std::string where = rc.where();
+      row +=
+        " " + fixed(t[1] / t[0]) + " | " + fixed(t[2] / t[0]) + " | " +
+        check(t[1] / t[0] >= 5, "stencil build >= 5x OSD refine+factory, " + where, fixed(t[1] / t[0]) + "x") + " | " +
+        check(t[2] / t[0] >= 5, "stencil build >= 5x OSD factory alone, " + where, fixed(t[2] / t[0]) + "x") + " |";
+    } else {
+      row += " - | - | | |";
     }
-  }
+    out(row + "\n");
+  });
 }
 
 // the same Apply_job with a given number of threads
@@ -596,14 +595,10 @@ void apply_section(const Options& options)
     "| scheme | input | levels | stencils | terms | MB | ours 1T | OSD 1T | ours 2T | OSD 2T | OSD omp float 2T "
     "| ours %BW 1T | ours %BW 2T | OSD %BW 2T | target 1T | target 2T | target 70% BW | ours vs OSD points "
     "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|\n");
-  for(const Case& c : apply_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    const int levels = c.levels.front();
-    Apply_ptr mine = ours_apply(*in, c.scheme, levels);
-    Apply_ptr theirs = osd_apply(in->soup, c.scheme, levels);
-    Apply_ptr omp = osd_apply_omp_float(in->soup, c.scheme, levels);
+  for_each_row(apply_plan, [&](const Row_case& rc) {
+    Apply_ptr mine = ours_apply(rc.in, rc.c.scheme, rc.levels);
+    Apply_ptr theirs = osd_apply(rc.in.soup, rc.c.scheme, rc.levels);
+    Apply_ptr omp = osd_apply_omp_float(rc.in.soup, rc.c.scheme, rc.levels);
     With_threads mine1(mine.get(), 1), mine2(mine.get(), 2);
     std::unique_ptr<With_threads> theirs1, theirs2, omp2;
     if(theirs) {
@@ -616,10 +611,9 @@ void apply_section(const Options& options)
       time_jobs({&mine1, theirs1.get(), &mine2, theirs2.get(), omp2.get()}, std::max(options.runs, 5));
     const double mb = mine->bytes() / 1e6;
     const double ours_bw1 = mine->bytes() / t[0] / 1e9 / one.triad, ours_bw2 = mine->bytes() / t[2] / 1e9 / two.triad;
-    const std::string where = scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels";
+    const std::string where = rc.where();
     std::string row =
-      "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " | " +
-      std::to_string(mine->stencils()) + " | " + std::to_string(mine->terms()) +
+      rc.cells() + " " + std::to_string(mine->stencils()) + " | " + std::to_string(mine->terms()) +
       (theirs && theirs->terms() != mine->terms() ? " (OSD " + std::to_string(theirs->terms()) + ")" : "") + " | " +
       fixed(mb, 0) + " | " + seconds(t[0]) + " | " + (theirs ? seconds(t[1]) : "-") + " | " + seconds(t[2]) + " | " +
       (theirs ? seconds(t[3]) : "-") + " | " + (omp ? seconds(t[4]) : "-") + " | " + fixed(100 * ours_bw1, 0) + " | " +
@@ -645,7 +639,7 @@ void apply_section(const Options& options)
       mine->set_threads(1);
       mine->run();
       const std::vector<P3> a = mine->output_points(), b = theirs->output_points();
-      const Agreement agreement = compare_points(a, b, in->diagonal);
+      const Agreement agreement = compare_points(a, b, rc.in.diagonal);
       const bool bad = !agreement.same_count || agreement.unmatched > 0 || agreement.max_relative > 1e-12;
       row += " " + std::string(bad ? "**" : "") + describe(agreement, a.size(), b.size()) +
              std::string(bad ? " DIFFER**" : "") + " |";
@@ -653,7 +647,7 @@ void apply_section(const Options& options)
       row += " - |";
     }
     out(row + "\n");
-  }
+  });
 }
 
 // --- peak memory ------------------------------------------------------------------
@@ -737,29 +731,23 @@ void memory_section(const Options& options)
     "Target: ours no higher than CGAL's `Subdivision_method_3`.\n\n"
     "| scheme | input | levels | ours MB | CGAL MB | OpenMesh MB | OSD Far MB | ours/CGAL | target <= CGAL |\n"
     "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
-  for(const Case& c : memory_plan) {
-    const Input* in = input(c.input);
-    if(in == nullptr)
-      continue;
-    const int levels = c.levels.front();
+  for_each_row(memory_plan, [&](const Row_case& rc) {
     double mb[number_of_peers];
     for(int p = 0; p < number_of_peers; ++p)
-      mb[p] = refinement(static_cast<Peer>(p), *in, c.scheme, 1)
-                ? child_memory(options, static_cast<Peer>(p), c.scheme, c.input, levels)
+      mb[p] = refinement(static_cast<Peer>(p), rc.in, rc.c.scheme, 1)
+                ? child_memory(options, static_cast<Peer>(p), rc.c.scheme, rc.c.input, rc.levels)
                 : nan_value;
-    std::string row = "| " + scheme_name(c.scheme) + " | " + in->name + " | " + std::to_string(levels) + " |";
+    std::string row = rc.cells();
     for(int p = 0; p < number_of_peers; ++p)
       row += " " + fixed(mb[p], 0) + " |";
     row += " " + fixed(mb[ours] / mb[cgal]) + " | ";
     if(std::isfinite(mb[ours]) && std::isfinite(mb[cgal]))
-      row += check(
-        mb[ours] <= mb[cgal],
-        "peak memory <= CGAL's, " + scheme_name(c.scheme) + ", " + in->name + ", " + std::to_string(levels) + " levels",
-        fixed(mb[ours], 0) + " MB vs " + fixed(mb[cgal], 0) + " MB");
+      row += check(mb[ours] <= mb[cgal], "peak memory <= CGAL's, " + rc.where(),
+                   fixed(mb[ours], 0) + " MB vs " + fixed(mb[cgal], 0) + " MB");
     else
       row += "(not measured)";
     out(row + " |\n");
-  }
+  });
 }
 
 // --- agreement ------------------------------------------------------------------
