@@ -115,6 +115,7 @@ class Carried_data
 {
 public:
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
   /// the recorded stencil of every new vertex, by new index
   using Vertex_stencils = std::vector<Stencil<vertex_descriptor, FT>>;
@@ -123,11 +124,14 @@ public:
   /// a new face of a level, its parent and its vertices
   using New_face = internal::New_face<Mesh>;
   /// after the rebuild: writes the values of the corners of the new faces
-  using Corner_writer = std::function<void(const Mesh&, const std::vector<New_face>&,
-                                           const std::vector<vertex_descriptor>&, const std::vector<Vertex_origin>&)>;
-  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
-  /// the rows of a level of a corner map interpolated smoothly
+  /// after the rebuild: writes the value of one corner of a new face, given
+  /// its halfedge (into the corner's vertex), the new face's parent (old face
+  /// ordinal) and the origin of the corner's vertex
+  using Corner_writer = std::function<void(halfedge_descriptor, std::size_t, const Vertex_origin&)>;
+  /// where the corners of a level of a corner map take their values from
   using Face_varying_rows = internal::Face_varying_rows<Mesh, FT>;
+  /// refines a corner map's face-varying topology one level, each row to the visitor
+  using Face_varying_refine = std::function<Face_varying_rows(const internal::Face_varying_row_visitor<FT>&)>;
   /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
   using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
@@ -247,15 +251,14 @@ public:
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
       for(const auto& channel : m_data->m_corner_channels) {
         const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
-        if constexpr(has_sharp_level<Mask>::value)
-          if(channel.interpolation != Face_varying_interpolation::all) {
-            m_corner_writers.push_back(
-              channel.make_writer(internal::smooth_face_varying_rows<Mesh, FT>(topology, mask, channel.interpolation)));
-            continue;
-          }
-        // linear in every face (the linear schemes are linear in every mode)
-        m_corner_writers.push_back(
-          channel.make_writer(internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask))));
+        const auto refine = [&](const internal::Face_varying_row_visitor<FT>& visit) {
+          if constexpr(has_sharp_level<Mask>::value)
+            if(channel.interpolation != Face_varying_interpolation::all)
+              return internal::smooth_face_varying_rows<Mesh, FT>(topology, mask, channel.interpolation, visit);
+          // linear in every face (the linear schemes are linear in every mode)
+          return internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask), visit);
+        };
+        m_corner_writers.push_back(channel.make_writer(topology, refine));
       }
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
@@ -264,14 +267,10 @@ public:
     template <class New_level>
     void write(const New_level& level)
     {
-      if(m_data->wants_provenance() || !m_corner_writers.empty()) {
-        const std::vector<New_face> new_faces = internal::new_faces_of<Mesh>(level);
-        const auto& new_vertices = level.elements().vertices;
-        if(m_data->wants_provenance())
-          write_provenance(new_faces, new_vertices);
-        for(const auto& write : m_corner_writers)
-          write(*m_mesh, new_faces, new_vertices, m_new_origins);
-      }
+      if(m_data->wants_provenance())
+        write_provenance(internal::new_faces_of<Mesh>(level), level.elements().vertices);
+      if(!m_corner_writers.empty())
+        write_corners(level);
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -285,6 +284,23 @@ public:
     }
 
   private:
+    // every corner of every new face, to every corner writer: corner i of a
+    // new face is the target of the halfedge from corner i - 1
+    template <class New_level>
+    void write_corners(const New_level& level)
+    {
+      const auto& record = level.faces();
+      for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
+        record.for_each_face_in_block(b, [&](std::size_t, const auto* corners, std::size_t size, std::size_t parent) {
+          for(std::size_t i = 0; i < size; ++i) {
+            const halfedge_descriptor h = level.halfedge(corners[i == 0 ? size - 1 : i - 1].halfedge);
+            const Vertex_origin& origin = m_new_origins[corners[i].vertex];
+            for(const auto& write : m_corner_writers)
+              write(h, parent, origin);
+          }
+        });
+    }
+
     template <class Mask>
     void read_provenance(const Mask&)
     {
@@ -389,7 +405,7 @@ private:
     /// whether two corners hold the same value (the same index, with an index map)
     std::function<bool(halfedge_descriptor, halfedge_descriptor)> same;
     /// reads the old corner values, combines them by the rows of the level
-    std::function<Corner_writer(const Face_varying_rows&)> make_writer;
+    std::function<Corner_writer(const internal::Face_varying_topology<Mesh>&, const Face_varying_refine&)> make_writer;
   };
 
   struct No_index_map
@@ -398,31 +414,24 @@ private:
   // the writer of a corner map (and of its index map: a new value's index is
   // its row, so corners with one value share it)
   template <class CornerMap, class IndexMap>
-  static std::function<Corner_writer(const Face_varying_rows&)> corner_writer_maker(CornerMap map, IndexMap indices)
+  static auto corner_writer_maker(CornerMap map, IndexMap indices)
   {
-    return [map, indices](const Face_varying_rows& fvar) -> Corner_writer {
+    return [map, indices](const internal::Face_varying_topology<Mesh>& topology,
+                          const Face_varying_refine& refine) -> Corner_writer {
       using Value = typename boost::property_traits<CornerMap>::value_type;
-      const auto value_of = [&](typename Face_varying_rows::Cut_vertex v) -> Value {
-        return get(map, fvar.corner_of_value[v]);
+      const auto value_of = [&](typename internal::Face_varying_cut_mesh::Vertex_index v) -> Value {
+        return get(map, topology.corner_of(v));
       };
       auto values = std::make_shared<std::vector<Value>>();
-      values->reserve(fvar.rows.size());
-      for(const auto& row : fvar.rows)
-        values->push_back(internal::combine_values<Value>(value_of, row.terms()));
-      auto lookup = std::make_shared<Face_varying_rows>();
-      lookup->face_starts = fvar.face_starts;
-      lookup->entries = fvar.entries;
-      return [map, indices, values, lookup](const Mesh& new_mesh, const std::vector<New_face>& new_faces,
-                                            const std::vector<vertex_descriptor>& new_vertices,
-                                            const std::vector<Vertex_origin>& origins) {
-        for(const New_face& face : new_faces)
-          for(auto h : CGAL::halfedges_around_face(halfedge(face.face, new_mesh), new_mesh)) {
-            const std::size_t j = face.vertices[face.corner_at(target(h, new_mesh), new_vertices)];
-            const std::size_t row = lookup->row_of(face.parent, origins[j]);
-            put(map, h, (*values)[row]);
-            if constexpr(!std::is_same<IndexMap, No_index_map>::value)
-              put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
-          }
+      const auto lookup =
+        std::make_shared<const Face_varying_rows>(refine([&](const internal::Face_varying_row<FT>& row) {
+          values->push_back(internal::combine_values<Value>(value_of, row));
+        }));
+      return [map, indices, values, lookup](halfedge_descriptor h, std::size_t parent, const Vertex_origin& origin) {
+        const std::size_t row = lookup->row_of(parent, origin);
+        put(map, h, (*values)[row]);
+        if constexpr(!std::is_same<IndexMap, No_index_map>::value)
+          put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
       };
     };
   }

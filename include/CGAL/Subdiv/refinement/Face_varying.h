@@ -27,6 +27,7 @@
 #include <functional>
 #include <memory>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -55,22 +56,24 @@ namespace internal {
 /// the mesh that a face-varying topology is cut into: its points are never read
 using Face_varying_cut_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
 
+/// the row of a new vertex of the cut mesh over its old vertices (one per value)
+template <class FT>
+using Face_varying_row = Stencil<typename Face_varying_cut_mesh::Vertex_index, FT>;
+
+/// called with the row of every new vertex of the cut mesh, in order: the
+/// rows are combined with the values as they come, never stored (a level
+/// makes millions of them)
+template <class FT>
+using Face_varying_row_visitor = std::function<void(const Face_varying_row<FT>&)>;
+
 /*
- * The rows of one level of a corner map: the rows of the new vertices of the
- * cut mesh over its old vertices (one per value), and, for every corner of
- * every new face, which row gives its value.
+ * Where the value of every corner of every new face of one level of a corner
+ * map comes from: the row of a new vertex of the cut mesh, numbered in the
+ * order of the `Face_varying_row_visitor` calls.
  */
 template <class Mesh, class FT>
 struct Face_varying_rows
 {
-  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
-  using Cut_vertex = typename Face_varying_cut_mesh::Vertex_index;
-
-  /// a corner of the old mesh that holds the value of each cut vertex (by index)
-  std::vector<halfedge_descriptor> corner_of_value;
-  /// the row of every new vertex of the cut mesh
-  std::vector<Stencil<Cut_vertex, FT>> rows;
-
   /// where the value of a new corner comes from: the element of old face
   /// `face` (ordinal) that made the corner's vertex
   struct Entry
@@ -180,21 +183,28 @@ private:
         }
         m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
       }
-    // equal values in sectors that seams separate on both sides
+    // equal values in sectors that seams separate on both sides: the values
+    // of each vertex with more than one, grouped by vertex (counting sort)
     m_disjoint.assign(m_corner_of.size(), false);
-    std::vector<std::vector<std::size_t>> values_of_vertex(num_vertices(mesh));
+    std::vector<std::size_t> starts(num_vertices(mesh) + 1, 0);
     for(std::size_t v = 0; v < m_corner_of.size(); ++v)
-      values_of_vertex[m_vertex_of[v]].push_back(v);
-    for(const auto& values : values_of_vertex)
-      for(std::size_t a = 0; a < values.size(); ++a)
-        for(std::size_t b = a + 1; b < values.size(); ++b)
-          if(same(m_corner_of[values[a]], m_corner_of[values[b]]))
-            m_disjoint[values[a]] = m_disjoint[values[b]] = true;
+      ++starts[m_vertex_of[v] + 1];
+    std::partial_sum(starts.begin(), starts.end(), starts.begin());
+    std::vector<std::size_t> values_of_vertex(m_corner_of.size()), filled(starts.begin(), starts.end() - 1);
+    for(std::size_t v = 0; v < m_corner_of.size(); ++v)
+      values_of_vertex[filled[m_vertex_of[v]]++] = v;
+    for(std::size_t vertex = 0; vertex + 1 < starts.size(); ++vertex)
+      for(std::size_t a = starts[vertex]; a < starts[vertex + 1]; ++a)
+        for(std::size_t b = a + 1; b < starts[vertex + 1]; ++b)
+          if(same(m_corner_of[values_of_vertex[a]], m_corner_of[values_of_vertex[b]]))
+            m_disjoint[values_of_vertex[a]] = m_disjoint[values_of_vertex[b]] = true;
   }
 
   void make_cut_mesh()
   {
     const Mesh& mesh = *m_mesh;
+    // room for the edges of the mesh and as many seams again
+    m_cut.reserve(m_cut.number_of_vertices(), 2 * num_edges(mesh), num_faces(mesh));
     m_cut_halfedge.assign(m_parent.size(), Cut::Halfedge_index());
     std::vector<typename Cut::Vertex_index> corners;
     for(auto f : faces(mesh)) {
@@ -264,9 +274,11 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
   }
 }
 
-/// the rows of `topology`'s cut mesh refined by `cut_mask` (a mask of the cut mesh)
+/// the rows of `topology`'s cut mesh refined by `cut_mask` (a mask of the
+/// cut mesh), given to `visit`, and where each new corner takes its row from
 template <class Mesh, class FT, class CutMask>
-Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topology, const CutMask& cut_mask)
+Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topology, const CutMask& cut_mask,
+                                        const Face_varying_row_visitor<FT>& visit)
 {
   using Cut = Face_varying_cut_mesh;
   const Cut& cut = topology.cut();
@@ -274,11 +286,18 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
   const Mesh& mesh = topology.mesh();
   Face_varying_rows<Mesh, FT> result;
   const auto host = make_host(cut, cut_mask);
-  Stencil_recorder<Cut, FT> recorder;
-  recorder.read(host, cut_mask, Parallel_loop(1));
-  result.rows = std::move(recorder.rows);
-  for(std::size_t v = 0; v < cut.number_of_vertices(); ++v)
-    result.corner_of_value.push_back(topology.corner_of(typename Cut::Vertex_index(static_cast<Cut::size_type>(v))));
+  // one row after the other (one thread, in order), through one stencil that
+  // merges the sources
+  Face_varying_row<FT> row;
+  row.reserve(16);
+  for_each_new_vertex(
+    host, cut_mask,
+    [&](std::size_t, const auto& report) {
+      row.clear();
+      report(row);
+      visit(row);
+    },
+    Parallel_loop(1));
 
   // the new vertex of every old element of the cut mesh
   const std::size_t none = static_cast<std::size_t>(-1);
@@ -316,7 +335,8 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
  */
 template <class Mesh, class FT, class Mask>
 Face_varying_rows<Mesh, FT> smooth_face_varying_rows(const Face_varying_topology<Mesh>& topology, const Mask& mask,
-                                                     Face_varying_interpolation mode)
+                                                     Face_varying_interpolation mode,
+                                                     const Face_varying_row_visitor<FT>& visit)
 {
   using Cut = Face_varying_cut_mesh;
   using Level = Sharp_level<Cut, FT>;
@@ -336,16 +356,17 @@ Face_varying_rows<Mesh, FT> smooth_face_varying_rows(const Face_varying_topology
                                            : S(tags->vertex_sharpness(topology.vertex_of(v)));
     },
     tags->method(), Border_corners::smooth);
-  return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level));
+  return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level), visit);
 }
 
 /// the rows of one level of a corner map whose topology is `topology`,
 /// refined by `linear_mask` (the linear scheme of the split), face by face
 template <class Mesh, class FT, class LinearMask>
 Face_varying_rows<Mesh, FT> linear_face_varying_rows(const Face_varying_topology<Mesh>& topology,
-                                                     const LinearMask& linear_mask)
+                                                     const LinearMask& linear_mask,
+                                                     const Face_varying_row_visitor<FT>& visit)
 {
-  return rows_of_cut<Mesh, FT>(topology, linear_mask.template rebind<Face_varying_cut_mesh, FT>());
+  return rows_of_cut<Mesh, FT>(topology, linear_mask.template rebind<Face_varying_cut_mesh, FT>(), visit);
 }
 
 } // namespace internal

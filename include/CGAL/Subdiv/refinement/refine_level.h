@@ -155,6 +155,15 @@ public:
     return m_elements;
   }
 
+  /// the new halfedge of id `id` (`Face_corner::halfedge`)
+  typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge(std::size_t id) const
+  {
+    if constexpr(Mesh_numbering<Mesh>::dense) // a Surface_mesh: new halfedge id is index id
+      return typename Mesh::Halfedge_index(static_cast<typename Mesh::size_type>(id));
+    else
+      return m_elements.halfedges[id];
+  }
+
   /// new edge k: the edge of new halfedge ids 2k and 2k + 1
   typename boost::graph_traits<Mesh>::edge_descriptor edge(std::size_t k, const Mesh& mesh) const
   {
