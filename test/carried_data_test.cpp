@@ -550,6 +550,69 @@ TEST(CarriedData, loop_refines_seams_as_borders_exactly)
 
 namespace {
 
+/*
+ * `corner_maps(mode, indices, uv, tangent)`: two maps of one face-varying
+ * channel (one topology and one set of rows per level) end exactly as each
+ * carried alone with the same index map, index for index.
+ */
+void expect_one_channel_as_maps_alone(const Edge_split_case& scheme)
+{
+  using H = Exact_mesh::Halfedge_index;
+  Exact_mesh mesh = scheme.base;
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto tangent = mesh.add_property_map<H, KE::Vector_2>("h:tangent").first;
+  auto index = mesh.add_property_map<H, std::size_t>("h:index").first;
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const bool second_chart = f.idx() < 2; // a seam around faces 0 and 1
+      const KE::Point_3& p = mesh.point(target(h, mesh));
+      uv[h] = uv_of(p) + KE::Vector_2(second_chart ? 5 : 0, 0);
+      tangent[h] = KE::Vector_2(2 * p.z() - p.x(), second_chart ? p.y() : -p.y());
+      index[h] = 2 * target(h, mesh).idx() + (second_chart ? 1 : 0);
+    }
+  const S::Face_varying_interpolation mode = S::Face_varying_interpolation::corners_plus1;
+  Exact_mesh alone_uv = mesh, alone_tangent = mesh;
+  S::Carried_data<Exact_mesh> both;
+  both.corner_maps(mode, index, uv, tangent);
+  scheme.refine(mesh, &both);
+
+  S::Carried_data<Exact_mesh> uv_data, tangent_data;
+  auto uv_alone = alone_uv.property_map<H, KE::Point_2>("h:uv").first;
+  auto index_alone = alone_uv.property_map<H, std::size_t>("h:index").first;
+  uv_data.corner_map(uv_alone, mode, index_alone);
+  scheme.refine(alone_uv, &uv_data);
+  auto tangent_alone = alone_tangent.property_map<H, KE::Vector_2>("h:tangent").first;
+  tangent_data.corner_map(tangent_alone, mode, alone_tangent.property_map<H, std::size_t>("h:index").first);
+  scheme.refine(alone_tangent, &tangent_data);
+
+  ASSERT_EQ(num_halfedges(mesh), num_halfedges(alone_uv));
+  std::size_t seam_corners = 0; // corners whose value differs from the next corner's around their vertex
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      EXPECT_EQ(uv[h], uv_alone[h]) << h;
+      EXPECT_EQ(index[h], index_alone[h]) << h;
+      EXPECT_EQ(tangent[h], tangent_alone[h]) << h;
+      const H across = opposite(next(h, mesh), mesh);
+      if(!is_border(across, mesh) && index[across] != index[h])
+        ++seam_corners;
+    }
+  EXPECT_GT(seam_corners, 0u); // the seam was carried
+}
+
+} // namespace
+
+TEST(CarriedData, catmull_clark_carries_the_maps_of_one_channel_as_each_alone)
+{
+  expect_one_channel_as_maps_alone(catmull_clark_case());
+}
+
+TEST(CarriedData, loop_carries_the_maps_of_one_channel_as_each_alone)
+{
+  expect_one_channel_as_maps_alone(loop_case());
+}
+
+namespace {
+
 using Exact_polyhedron = CGAL::Polyhedron_3<KE>;
 
 /// a map of any descriptor kept beside the mesh: property maps of a Polyhedron_3

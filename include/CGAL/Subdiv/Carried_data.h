@@ -86,6 +86,10 @@ enum class Interpolation {
  *   are one value when their indices are equal, whatever their values. The
  *   refined corners get the indices of their new values (one per value, from
  *   0 on every level), so that an indexed file can be written.
+ * - `corner_maps(mode, index_map, map1, map2, ...)`: several corner maps that
+ *   share one index map, as the maps of one OpenSubdiv face-varying channel
+ *   (UVs and tangents, say): the face-varying topology and the rows of a
+ *   level are made once for all of them. Each map ends as it would alone.
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -125,13 +129,10 @@ public:
   using New_face = internal::New_face<Mesh>;
   /// after the rebuild: writes the values of the corners of the new faces
   /// after the rebuild: writes the value of one corner of a new face, given
-  /// its halfedge (into the corner's vertex), the new face's parent (old face
-  /// ordinal) and the origin of the corner's vertex
-  using Corner_writer = std::function<void(halfedge_descriptor, std::size_t, const Vertex_origin&)>;
+  /// its halfedge (into the corner's vertex) and its row in the level
+  using Corner_writer = std::function<void(halfedge_descriptor, std::size_t)>;
   /// where the corners of a level of a corner map take their values from
   using Face_varying_rows = internal::Face_varying_rows<Mesh, FT>;
-  /// refines a corner map's face-varying topology one level, each row to the visitor
-  using Face_varying_refine = std::function<Face_varying_rows(const internal::Face_varying_row_visitor<FT>&)>;
   /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
   using Face_writer = std::function<void(const std::vector<face_descriptor>&, const std::vector<std::size_t>&)>;
 
@@ -158,17 +159,25 @@ public:
   Carried_data& corner_map(CornerMap map, Face_varying_interpolation interpolation)
   {
     const auto same = [map](halfedge_descriptor a, halfedge_descriptor b) { return get(map, a) == get(map, b); };
-    m_corner_channels.push_back(Corner_channel{interpolation, same, corner_writer_maker(map, No_index_map())});
+    m_corner_channels.push_back(Corner_channel{interpolation, same, {value_map_level(map)}});
     return *this;
   }
 
   template <class CornerMap, class IndexMap>
   Carried_data& corner_map(CornerMap map, Face_varying_interpolation interpolation, IndexMap indices)
   {
+    return corner_maps(interpolation, indices, map);
+  }
+
+  template <class IndexMap, class... CornerMaps>
+  Carried_data& corner_maps(Face_varying_interpolation interpolation, IndexMap indices, CornerMaps... maps)
+  {
+    static_assert(sizeof...(CornerMaps) > 0, "corner_maps: give at least one corner map");
     const auto same = [indices](halfedge_descriptor a, halfedge_descriptor b) {
       return get(indices, a) == get(indices, b);
     };
-    m_corner_channels.push_back(Corner_channel{interpolation, same, corner_writer_maker(map, indices)});
+    m_corner_channels.push_back(
+      Corner_channel{interpolation, same, {index_map_level(indices), value_map_level(maps)...}});
     return *this;
   }
 
@@ -216,6 +225,10 @@ public:
            !wants_provenance();
   }
 
+private:
+  struct Corner_channel; // corner maps that share one face-varying topology
+
+public:
   /*
    * The sink of `internal::refine_level` that carries the data through one
    * level: it records every new vertex's stencil (merged, `Stencil::add`) and
@@ -249,17 +262,8 @@ public:
       for(const auto& channel : m_data->m_vertex_channels)
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
-      for(const auto& channel : m_data->m_corner_channels) {
-        const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
-        const auto refine = [&](const internal::Face_varying_row_visitor<FT>& visit) {
-          if constexpr(has_sharp_level<Mask>::value)
-            if(channel.interpolation != Face_varying_interpolation::all)
-              return internal::smooth_face_varying_rows<Mesh, FT>(topology, mask, channel.interpolation, visit);
-          // linear in every face (the linear schemes are linear in every mode)
-          return internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask), visit);
-        };
-        m_corner_writers.push_back(channel.make_writer(topology, refine));
-      }
+      for(const auto& channel : m_data->m_corner_channels)
+        m_corner_levels.push_back(read_channel(channel, mask));
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
     }
@@ -269,7 +273,7 @@ public:
     {
       if(m_data->wants_provenance())
         write_provenance(internal::new_faces_of<Mesh>(level), level.elements().vertices);
-      if(!m_corner_writers.empty())
+      if(!m_corner_levels.empty())
         write_corners(level);
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
@@ -284,6 +288,40 @@ public:
     }
 
   private:
+    // a corner channel on this level: its topology is made and refined
+    // once, every row going to each of its maps
+    struct Corner_level
+    {
+      std::shared_ptr<const Face_varying_rows> rows;
+      std::vector<Corner_writer> writers;
+    };
+
+    template <class Mask>
+    Corner_level read_channel(const Corner_channel& channel, const Mask& mask)
+    {
+      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
+      std::vector<Corner_map_level> maps;
+      for(const auto& start : channel.maps)
+        maps.push_back(start(topology));
+      const internal::Face_varying_row_visitor<FT> visit = [&](const internal::Face_varying_row<FT>& row) {
+        for(Corner_map_level& map : maps)
+          if(map.add_row)
+            map.add_row(row);
+      };
+      Corner_level result;
+      const auto refine = [&]() {
+        if constexpr(has_sharp_level<Mask>::value)
+          if(channel.interpolation != Face_varying_interpolation::all)
+            return internal::smooth_face_varying_rows<Mesh, FT>(topology, mask, channel.interpolation, visit);
+        // linear in every face (the linear schemes are linear in every mode)
+        return internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask), visit);
+      };
+      result.rows = std::make_shared<const Face_varying_rows>(refine());
+      for(Corner_map_level& map : maps)
+        result.writers.push_back(std::move(map.write));
+      return result;
+    }
+
     // every corner of every new face, to every corner writer: corner i of a
     // new face is the target of the halfedge from corner i - 1
     template <class New_level>
@@ -295,8 +333,11 @@ public:
           for(std::size_t i = 0; i < size; ++i) {
             const halfedge_descriptor h = level.halfedge(corners[i == 0 ? size - 1 : i - 1].halfedge);
             const Vertex_origin& origin = m_new_origins[corners[i].vertex];
-            for(const auto& write : m_corner_writers)
-              write(h, parent, origin);
+            for(const Corner_level& channel : m_corner_levels) {
+              const std::size_t row = channel.rows->row_of(parent, origin);
+              for(const Corner_writer& write : channel.writers)
+                write(h, row);
+            }
           }
         });
     }
@@ -330,7 +371,7 @@ public:
     std::vector<Vertex_origin> m_new_origins;
     internal::Provenance_level<Mesh> m_provenance;
     std::vector<Vertex_writer> m_vertex_writers;
-    std::vector<Corner_writer> m_corner_writers;
+    std::vector<Corner_level> m_corner_levels;
     std::vector<Face_writer> m_face_writers;
   };
 
@@ -399,40 +440,54 @@ private:
                        [&](const Vertex_channel& c) { return c.interpolation == interpolation; });
   }
 
+  // a corner map on one level: `add_row` combines its old values by each row
+  // of the level in turn (none for an index map), `write` puts a new corner's
+  // value, given its row
+  struct Corner_map_level
+  {
+    internal::Face_varying_row_visitor<FT> add_row;
+    Corner_writer write;
+  };
+  using Corner_map_start = std::function<Corner_map_level(const internal::Face_varying_topology<Mesh>&)>;
+
+  // corner maps that share one face-varying topology
   struct Corner_channel
   {
     Face_varying_interpolation interpolation;
     /// whether two corners hold the same value (the same index, with an index map)
     std::function<bool(halfedge_descriptor, halfedge_descriptor)> same;
-    /// reads the old corner values, combines them by the rows of the level
-    std::function<Corner_writer(const internal::Face_varying_topology<Mesh>&, const Face_varying_refine&)> make_writer;
+    std::vector<Corner_map_start> maps;
   };
 
-  struct No_index_map
-  {};
-
-  // the writer of a corner map (and of its index map: a new value's index is
-  // its row, so corners with one value share it)
-  template <class CornerMap, class IndexMap>
-  static auto corner_writer_maker(CornerMap map, IndexMap indices)
+  // a map of values: the new value of a row is the combination of the old
+  // values of its terms
+  template <class CornerMap>
+  static Corner_map_start value_map_level(CornerMap map)
   {
-    return [map, indices](const internal::Face_varying_topology<Mesh>& topology,
-                          const Face_varying_refine& refine) -> Corner_writer {
+    return [map](const internal::Face_varying_topology<Mesh>& topology) {
       using Value = typename boost::property_traits<CornerMap>::value_type;
-      const auto value_of = [&](typename internal::Face_varying_cut_mesh::Vertex_index v) -> Value {
-        return get(map, topology.corner_of(v));
-      };
       auto values = std::make_shared<std::vector<Value>>();
-      const auto lookup =
-        std::make_shared<const Face_varying_rows>(refine([&](const internal::Face_varying_row<FT>& row) {
-          values->push_back(internal::combine_values<Value>(value_of, row));
-        }));
-      return [map, indices, values, lookup](halfedge_descriptor h, std::size_t parent, const Vertex_origin& origin) {
-        const std::size_t row = lookup->row_of(parent, origin);
-        put(map, h, (*values)[row]);
-        if constexpr(!std::is_same<IndexMap, No_index_map>::value)
-          put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
+      const auto add_row = [map, values, &topology](const internal::Face_varying_row<FT>& row) {
+        const auto value_of = [&](typename internal::Face_varying_cut_mesh::Vertex_index v) -> Value {
+          return get(map, topology.corner_of(v));
+        };
+        values->push_back(internal::combine_values<Value>(value_of, row));
       };
+      const auto write = [map, values](halfedge_descriptor h, std::size_t row) { put(map, h, (*values)[row]); };
+      return Corner_map_level{add_row, write};
+    };
+  }
+
+  // an index map: a new value's index is its row, so corners with one value
+  // share it
+  template <class IndexMap>
+  static Corner_map_start index_map_level(IndexMap indices)
+  {
+    return [indices](const internal::Face_varying_topology<Mesh>&) {
+      const auto write = [indices](halfedge_descriptor h, std::size_t row) {
+        put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
+      };
+      return Corner_map_level{nullptr, write};
     };
   }
 
