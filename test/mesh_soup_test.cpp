@@ -123,6 +123,8 @@ std::string stl_refusal(const std::string& text)
   return refusal(text, Mesh_format::stl);
 }
 
+using Colour = std::array<unsigned char, 4>;
+
 std::vector<std::size_t> face(const Mesh_soup& soup, std::size_t f)
 {
   return std::vector<std::size_t>(soup.indices.begin() + static_cast<std::ptrdiff_t>(soup.face_starts[f]),
@@ -450,8 +452,11 @@ TEST(MeshSoupOff, ColoursCommentsAndWindowsLineEndings)
   ASSERT_EQ(soup.number_of_faces(), 2u);
   EXPECT_EQ(face(soup, 0), (Face{0, 1, 2, 3}));
   EXPECT_EQ(face(soup, 1), (Face{0, 2, 3}));
-  EXPECT_EQ(soup.notes,
-            (std::vector<std::string>{"ignored the vertex colours of 'a.off'", "ignored the face colours of 'a.off'"}));
+  // vertex 3 has one colour component and vertex 4 none: no colours
+  EXPECT_TRUE(soup.colours.empty());
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex colours of 'a.off': vertex 3 (line 8) has 1 "
+                                                  "colour component (expected red green blue [alpha])",
+                                                  "ignored the face colours of 'a.off'"}));
 }
 
 TEST(MeshSoupOff, KeywordVariants)
@@ -462,8 +467,9 @@ TEST(MeshSoupOff, KeywordVariants)
   EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex texture coordinates of 'a.off'"}));
   soup = parse_off("CNOFF\n3 1 0\n0 0 0 0 0 1 1 0 0\n1 0 0 0 0 1 1 0 0\n0 1 0 0 0 1 1 0 0\n3 0 1 2\n");
   EXPECT_EQ(soup.points[2], (Point{0, 1, 0}));
-  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex normals of 'a.off'",
-                                                  "ignored the vertex colours of 'a.off'"}));
+  // integer components are from 0 to 255: "1 0 0" is a very dark red
+  EXPECT_EQ(soup.colours, (std::vector<Colour>(3, Colour{1, 0, 0, 255})));
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex normals of 'a.off'"}));
   soup = parse_off("NOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"); // no normals after all: no note
   EXPECT_TRUE(soup.notes.empty());
   soup = parse_off("nOFF\n3\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 2 1 0\n");
@@ -482,7 +488,40 @@ TEST(MeshSoupOff, TruncatedColourOfCoffIsIgnored)
   EXPECT_EQ(soup.points[0], (Point{0, 0, 0}));
   EXPECT_EQ(soup.points[2], (Point{0, 1, 0}));
   EXPECT_EQ(face(soup, 0), (Face{0, 1, 2}));
-  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex colours of 'a.off'"}));
+  EXPECT_TRUE(soup.colours.empty());
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex colours of 'a.off': vertex 0 (line 3) has 1 "
+                                                  "colour component (expected red green blue [alpha])"}));
+}
+
+TEST(MeshSoupOff, KeepsTheVertexColoursOfCoff)
+{
+  // integers from 0 to 255, alpha or not
+  Mesh_soup soup = parse_off("COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0 128 0 64\n0 1 0 0 0 7 255\n3 0 1 2\n");
+  EXPECT_EQ(soup.colours, (std::vector<Colour>{{255, 0, 0, 255}, {0, 128, 0, 64}, {0, 0, 7, 255}}));
+  EXPECT_TRUE(soup.notes.empty());
+  // reals from 0 to 1 when a component of the vertex is written as one;
+  // after the normal (N), before the texture coordinates (ST)
+  soup = parse_off(
+    "STCNOFF\n3 1 0\n0 0 0 0 0 1 0.5 0.25 1 0.5 0.5\n1 0 0 0 0 1 1 1 1 1.0 0 0\n"
+    "0 1 0 0 0 1 0 0 1e0 1 1\n3 0 1 2\n");
+  EXPECT_EQ(soup.colours, (std::vector<Colour>{{128, 64, 255, 255}, {255, 255, 255, 255}, {0, 0, 255, 255}}));
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex normals of 'a.off'",
+                                                  "ignored the vertex texture coordinates of 'a.off'"}));
+}
+
+TEST(MeshSoupOff, RefusesColourComponentsOutOfRange)
+{
+  EXPECT_EQ(off_refusal("COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 300 0 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+            "'a.off' line 4: vertex 1: the colour component '300' is out of range (integers from 0 to 255, or reals "
+            "from 0 to 1)");
+  EXPECT_EQ(off_refusal("COFF\n3 1 0\n0 0 0 0.5 1.5 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+            "'a.off' line 3: vertex 0: the colour component '1.5' is out of range (integers from 0 to 255, or reals "
+            "from 0 to 1)");
+  EXPECT_EQ(off_refusal("COFF\n3 1 0\n0 0 0 0 -1 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+            "'a.off' line 3: vertex 0: the colour component '-1' is out of range (integers from 0 to 255, or reals "
+            "from 0 to 1)");
+  EXPECT_EQ(off_refusal("COFF\n3 1 0\n0 0 0 0 red 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+            "'a.off' line 3: vertex 0: expected a colour component, found 'red'");
 }
 
 TEST(MeshSoupOff, TrailingContent)
@@ -1041,6 +1080,35 @@ TEST(MeshSoupPly, ReadsAsciiWithOtherPropertiesAndElements)
   EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex property red of 'a.ply'",
                                                   "ignored the face property quality of 'a.ply'",
                                                   "ignored the element 'edge' (2 items) of 'a.ply'"}));
+}
+
+TEST(MeshSoupPly, KeepsTheVertexColours)
+{
+  const std::string header =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\n";
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  // uchar components, alpha or not, in any order among the other properties
+  Mesh_soup soup =
+    parse_ply(header + "property uchar blue\nproperty uchar green\nproperty float quality\n" + "property uchar red\n" +
+              faces + "0 0 0 1 2 0.5 3\n1 0 0 0 0 0 255\n0 1 0 9 8 0 7\n3 0 1 2\n");
+  EXPECT_EQ(soup.colours, (std::vector<Colour>{{3, 2, 1, 255}, {255, 0, 0, 255}, {7, 8, 9, 255}}));
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex property quality of 'a.ply'"}));
+  // floating-point components from 0 to 1
+  soup = parse_ply(header + "property float red\nproperty float green\nproperty float blue\nproperty float alpha\n" +
+                   faces + "0 0 0 1 0.5 0 0.25\n1 0 0 0 0 0 1\n0 1 0 0 0 1 1\n3 0 1 2\n");
+  EXPECT_EQ(soup.colours, (std::vector<Colour>{{255, 128, 0, 64}, {0, 0, 0, 255}, {0, 0, 255, 255}}));
+  EXPECT_EQ(ply_refusal(header + "property float red\nproperty float green\nproperty float blue\n" + faces +
+                        "0 0 0 1 0.5 0\n1 0 0 0 1.5 0\n0 1 0 0 0 1\n3 0 1 2\n"),
+            "'a.ply' line 14: vertex 1: its green 1.5 is out of range (integers from 0 to 255, or reals from 0 to 1)");
+  EXPECT_EQ(ply_refusal(header + "property int red\nproperty int green\nproperty int blue\n" + faces +
+                        "0 0 0 1 2 3\n1 0 0 0 256 0\n0 1 0 0 0 1\n3 0 1 2\n"),
+            "'a.ply' line 14: vertex 1: its green 256 is out of range (integers from 0 to 255, or reals from 0 to 1)");
+  // red and green without blue: no colours
+  soup = parse_ply(header + "property uchar red\nproperty uchar green\n" + faces +
+                   "0 0 0 1 2\n1 0 0 3 4\n0 1 0 5 6\n3 0 1 2\n");
+  EXPECT_TRUE(soup.colours.empty());
+  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored the vertex properties red, green of 'a.ply'"}));
 }
 
 TEST(MeshSoupPly, AsciiIsATokenStream)

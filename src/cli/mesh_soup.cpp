@@ -9,6 +9,7 @@
 // reserve() or a loop before it was checked against the bytes left.
 #include "mesh_soup.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -17,6 +18,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <new>
 #include <string_view>
@@ -458,6 +461,19 @@ void end_face(Mesh_soup& soup)
   soup.face_starts.push_back(soup.indices.size());
 }
 
+/// a colour component as a file writes it, an integer from 0 to 255 or a
+/// real from 0 to 1 (scaled to 0 to 255 and rounded); false if it is out of
+/// that range
+bool colour_component(double value, bool integer, unsigned char& component)
+{
+  if(!(value >= 0 && value <= (integer ? 255 : 1)))
+    return false;
+  component = static_cast<unsigned char>(std::lround(integer ? value : value * 255));
+  return true;
+}
+
+const char* const colour_range = "integers from 0 to 255, or reals from 0 to 1";
+
 // ---------------------------------------------------------------------------
 // OFF (Geomview): [ST][C][N][4][n]OFF [BINARY], counts, vertices, faces
 
@@ -616,10 +632,51 @@ private:
     }
   }
 
-  /// one vertex line: x y z, then whatever the keyword announced (ignored)
+  /// one vertex line: x y z, then whatever the keyword announced (the
+  /// colour is kept, the rest ignored)
   void read_ascii_vertex(std::size_t v)
   {
     m_soup.points.push_back(read_point_on_line(m_text, v, m_extra_vertex_values_line));
+    if(m_keyword.colour && m_colours_missing.empty())
+      read_ascii_colour(v);
+  }
+
+  /// COFF: the colour of vertex `v`, after x y z and the normal (N), before
+  /// the texture coordinates (ST): red green blue [alpha]. A line without
+  /// one (as Geomview's optional values allow) makes the file's colours
+  /// ignored, with a note; a component that is not one is an error.
+  void read_ascii_colour(std::size_t v)
+  {
+    constexpr std::size_t most = 9; // the normal, the colour and the texture coordinates
+    std::array<std::string_view, most> tokens;
+    std::size_t count = 0;
+    for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line())
+      if(count++ < most)
+        tokens[count - 1] = token;
+    const std::size_t first = m_keyword.normal ? 3 : 0;
+    const std::size_t last = count - (m_keyword.texture ? std::min<std::size_t>(count, 2) : 0);
+    if(last < first + 3 || last > first + 4) {
+      m_colours_missing = numbered("vertex", v) + " (line " + std::to_string(m_text.line()) + ") has " +
+                          count_of(last > first ? last - first : 0, "colour component", "colour components") +
+                          " (expected red green blue [alpha])";
+      m_soup.colours.clear();
+      return;
+    }
+    // reals from 0 to 1 if any component is written as one, else integers
+    // from 0 to 255
+    bool integers = true;
+    for(std::size_t k = first; k < last; ++k)
+      integers = integers && tokens[k].find_first_of(".eE") == std::string_view::npos;
+    std::array<unsigned char, 4> colour = {0, 0, 0, 255};
+    for(std::size_t k = first; k < last; ++k) {
+      double value = 0;
+      if(!parse_real(tokens[k], value))
+        m_text.fail(numbered("vertex", v) + ": expected a colour component, found " + shown(tokens[k]));
+      if(!colour_component(value, integers, colour[k - first]))
+        m_text.fail(numbered("vertex", v) + ": the colour component " + shown(tokens[k]) + " is out of range (" +
+                    colour_range + ")");
+    }
+    m_soup.colours.push_back(colour);
   }
 
   void read_ascii_faces()
@@ -757,7 +814,7 @@ private:
     if(m_extra_vertex_values_line != 0) {
       if(m_keyword.normal)
         m_soup.notes.push_back("ignored the vertex normals" + of);
-      if(m_keyword.colour)
+      if(m_keyword.colour && m_keyword.binary)
         m_soup.notes.push_back("ignored the vertex colours" + of);
       if(m_keyword.texture)
         m_soup.notes.push_back("ignored the vertex texture coordinates" + of);
@@ -765,6 +822,8 @@ private:
         m_soup.notes.push_back("ignored the values after x y z on the vertex lines" + of + " (from line " +
                                std::to_string(m_extra_vertex_values_line) + ")");
     }
+    if(!m_colours_missing.empty())
+      m_soup.notes.push_back("ignored the vertex colours" + of + ": " + m_colours_missing);
     if(m_face_colours)
       m_soup.notes.push_back("ignored the face colours" + of);
   }
@@ -775,6 +834,7 @@ private:
   Off_keyword m_keyword;
   unsigned long long m_vertices = 0, m_faces = 0;
   std::size_t m_extra_vertex_values_line = 0; // the first line with values after x y z
+  std::string m_colours_missing;              // why the vertex colours are ignored (COFF)
   bool m_face_colours = false;
   std::string m_trailer; // the note on what follows the last face, if anything
   Mesh_soup m_soup;
@@ -1277,13 +1337,21 @@ struct Ply_element
   std::size_t line = 0;
   Ply_role role = Ply_role::other;
   std::size_t axes[3] = {no_property, no_property, no_property}; // vertex: the properties x, y, z
-  std::size_t corners = no_property;                             // face: the list of vertex indices
+  /// vertex: the properties red, green, blue, alpha (all no_property unless the first three are there)
+  std::size_t colour_channels[4] = {no_property, no_property, no_property, no_property};
+  std::size_t corners = no_property; // face: the list of vertex indices
 
-  int axis_of(std::size_t property) const
+  int axis_of(std::size_t property) const { return position_of(axes, property); }
+  int colour_channel_of(std::size_t property) const { return position_of(colour_channels, property); }
+  bool has_colours() const { return colour_channels[0] != no_property; }
+
+private:
+  template <std::size_t N>
+  static int position_of(const std::size_t (&properties)[N], std::size_t property)
   {
-    for(int axis = 0; axis < 3; ++axis)
-      if(axes[axis] == property)
-        return axis;
+    for(std::size_t k = 0; k < N; ++k)
+      if(properties[k] == property)
+        return static_cast<int>(k);
     return -1;
   }
 };
@@ -1636,6 +1704,7 @@ private:
     if(m_face == nullptr)
       m_text.fail_at_line(m_end_header_line, "the header declares no face element");
     find_axes(*m_vertex);
+    find_colour_channels(*m_vertex);
     find_corners(*m_face);
   }
 
@@ -1653,6 +1722,22 @@ private:
     for(int axis = 0; axis < 3; ++axis)
       if(vertex.axes[axis] == no_property)
         m_text.fail_at_line(vertex.line, std::string("the vertex element has no property ") + axis_names[axis]);
+  }
+
+  // red, green and blue (and alpha, if there) when the first three are
+  // scalar properties of the vertex; otherwise none (they are then noted as
+  // ignored)
+  static void find_colour_channels(Ply_element& vertex)
+  {
+    static const char* const channel_names[] = {"red", "green", "blue", "alpha"};
+    for(std::size_t i = 0; i < vertex.properties.size(); ++i)
+      for(int k = 0; k < 4; ++k)
+        if(vertex.properties[i].name == channel_names[k] && !vertex.properties[i].list &&
+           vertex.colour_channels[k] == no_property)
+          vertex.colour_channels[k] = i;
+    if(vertex.colour_channels[0] == no_property || vertex.colour_channels[1] == no_property ||
+       vertex.colour_channels[2] == no_property)
+      std::fill(std::begin(vertex.colour_channels), std::end(vertex.colour_channels), no_property);
   }
 
   void find_corners(Ply_element& face)
@@ -1750,17 +1835,24 @@ private:
   void read_vertex(Values& values, const Ply_element& element, unsigned long long v)
   {
     std::array<double, 3> p{};
+    std::array<unsigned char, 4> colour = {0, 0, 0, 255};
     for(std::size_t i = 0; i < element.properties.size(); ++i) {
-      const int axis = element.axis_of(i);
-      if(axis < 0) {
-        skip_property(values, element.properties[i], Ply_item{&element, v});
-        continue;
+      const Ply_property& property = element.properties[i];
+      if(const int axis = element.axis_of(i); axis >= 0) {
+        p[axis] = values.real(property.type);
+        if(!std::isfinite(p[axis]))
+          values.fail(not_finite("vertex " + std::to_string(v), values.written()));
+      } else if(const int channel = element.colour_channel_of(i); channel >= 0) {
+        if(!colour_component(values.real(property.type), is_integer(property.type), colour[channel]))
+          values.fail("vertex " + std::to_string(v) + ": its " + property.name + " " + values.written() +
+                      " is out of range (" + colour_range + ")");
+      } else {
+        skip_property(values, property, Ply_item{&element, v});
       }
-      p[axis] = values.real(element.properties[i].type);
-      if(!std::isfinite(p[axis]))
-        values.fail(not_finite("vertex " + std::to_string(v), values.written()));
     }
     m_soup.points.push_back(p);
+    if(element.has_colours())
+      m_soup.colours.push_back(colour);
   }
 
   template <class Values>
@@ -1810,13 +1902,13 @@ private:
   }
 
   /// "red, green, blue" (at most 10 names: a header may list thousands)
-  static std::string names_except(const Ply_element& element, std::size_t kept_a, std::size_t kept_b,
-                                  std::size_t kept_c, std::size_t& count)
+  static std::string names_except(const Ply_element& element, std::initializer_list<std::size_t> kept,
+                                  std::size_t& count)
   {
     std::string names;
     count = 0;
     for(std::size_t i = 0; i < element.properties.size(); ++i) {
-      if(i == kept_a || i == kept_b || i == kept_c)
+      if(std::find(kept.begin(), kept.end(), i) != kept.end())
         continue;
       if(count < 10)
         names += (count == 0 ? "" : ", ") + clipped(element.properties[i].name);
@@ -1831,11 +1923,15 @@ private:
   {
     const std::string of = " of " + quoted(name());
     std::size_t count = 0;
-    std::string names = names_except(*m_vertex, m_vertex->axes[0], m_vertex->axes[1], m_vertex->axes[2], count);
+    std::string names =
+      names_except(*m_vertex,
+                   {m_vertex->axes[0], m_vertex->axes[1], m_vertex->axes[2], m_vertex->colour_channels[0],
+                    m_vertex->colour_channels[1], m_vertex->colour_channels[2], m_vertex->colour_channels[3]},
+                   count);
     if(count > 0)
       m_soup.notes.push_back("ignored the vertex " + std::string(count == 1 ? "property " : "properties ") + names +
                              of);
-    names = names_except(*m_face, m_face->corners, no_property, no_property, count);
+    names = names_except(*m_face, {m_face->corners}, count);
     if(count > 0)
       m_soup.notes.push_back("ignored the face " + std::string(count == 1 ? "property " : "properties ") + names + of);
     for(const Ply_element& element : m_elements)

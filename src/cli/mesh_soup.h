@@ -59,6 +59,11 @@ struct Mesh_soup
   /// face gives every corner one (`v/vt` or `v/vt/vn`); a note says why
   /// when there are texture points.
   std::vector<std::size_t> texture_indices;
+  /// ASCII OFF (COFF) and PLY only: empty, or the colour of every point,
+  /// index for index with `points`: red, green, blue and alpha from 0 to 255
+  /// (components written as reals, from 0 to 1, are scaled and rounded;
+  /// alpha is 255 when the file gives none)
+  std::vector<std::array<unsigned char, 4>> colours;
   std::vector<Obj_tag> tags; // OBJ only
   /// one line per thing that was read but ignored (colours, normals, other
   /// PLY elements, text after the last face, ...), each naming the file

@@ -299,8 +299,11 @@ void write_surface(const Surface& mesh, const std::string& path, bool binary, co
   {
     Captured_cerr quiet;
     switch(format) {
-      case Mesh_format::off:
-        ok = CGAL::IO::write_OFF(out, drawn, np);
+      case Mesh_format::off: // COFF with the vertex colours, if any
+        if(const std::optional<Colour_map> colours = colours_of(drawn))
+          ok = CGAL::IO::write_OFF(out, drawn, np.vertex_color_map(*colours));
+        else
+          ok = CGAL::IO::write_OFF(out, drawn, np);
         break;
       case Mesh_format::obj: // the holes stay, tagged
         write_obj(mesh, out, tags, face_varying);

@@ -86,6 +86,25 @@ bool keep_texture_points(Surface& mesh, const Surface_scheme& scheme, const Pars
   return false;
 }
 
+// whether the vertex colours of `mesh` (a COFF or PLY file's) are carried to
+// OUTPUT: they are removed, with a note, where they cannot be
+void keep_colours(Surface& mesh, const Parsed_args& args, Mesh_format output_format, const std::string& input,
+                  std::vector<std::string>& notes)
+{
+  if(!colours_of(mesh))
+    return;
+  std::string why;
+  if(args.has("--displace"))
+    why = "--displace does not carry them yet";
+  else if(output_format != Mesh_format::off && output_format != Mesh_format::ply)
+    why = "OUTPUT '" + args.value("-o") + "' is " + mesh_format_name(output_format) +
+          ", which holds none (write .off or .ply to keep them)";
+  if(why.empty())
+    return;
+  notes.push_back("left the vertex colours of '" + input + "' out: " + why);
+  remove_colours(mesh);
+}
+
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
                            [--displace HEIGHTS] [--repair] [--split-non-manifold]
                            [--max-memory SIZE]
@@ -103,10 +122,14 @@ writing not included).
                         Surface_mesh<Simple_cartesian<double>::Point_3>. It must
                         be a manifold polygon mesh (borders allowed); if it is
                         not, the error names the edge or vertex at fault.
-                        Colours, normals and other properties are ignored;
-                        the texture coordinates of an OBJ file (vt, when
-                        every face references them: f v/vt) are carried with
-                        their seams (see --fvar) to an OBJ OUTPUT.
+                        The vertex colours of an ASCII COFF file and of a
+                        PLY file (red, green, blue, alpha: integers from 0
+                        to 255, or reals from 0 to 1) are carried with the
+                        weights of the points to an OFF or PLY OUTPUT; the
+                        texture coordinates of an OBJ file (vt, when every
+                        face references them: f v/vt) with their seams (see
+                        --fvar) to an OBJ OUTPUT. Normals and other
+                        properties are ignored.
                         OpenSubdiv's OBJ tags are read: t crease, t corner
                         (vertices from 0), t hole (faces from 0),
                         t interpolateboundary (RenderMan's numbers: 0 none,
@@ -317,6 +340,7 @@ int surface_command(const std::vector<std::string>& arguments)
   // the texture coordinates are carried by the refinement with tags (which
   // takes the plain path when they are all zero, as they are then)
   const bool textured = keep_texture_points(mesh, scheme, args, output_format, input, notes);
+  keep_colours(mesh, args, output_format, input, notes);
   const Sharp_options* refine_options = tagged || textured ? &sharp_options : nullptr;
   if(tagged && !scheme.limit_sharp && (displace || args.has("--limit")))
     throw Input_error("--scheme " + scheme.name +

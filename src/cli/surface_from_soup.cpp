@@ -211,7 +211,33 @@ void add_texture_points(Surface& mesh, const Mesh_soup& soup, const std::vector<
   }
 }
 
+// the colours of the soup's points in the map of the mesh, whose vertex v
+// is the point of the file numbered file_numbers[origin[v]]
+void add_colours(Surface& mesh, const Mesh_soup& soup, const std::vector<std::size_t>& file_numbers,
+                 std::size_t first_number, const std::vector<std::size_t>& origin)
+{
+  if(soup.colours.empty())
+    return;
+  Colour_map colours = mesh.add_property_map<Surface::Vertex_index, CGAL::IO::Color>(colour_name).first;
+  for(const Surface::Vertex_index v : mesh.vertices()) {
+    const auto& c = soup.colours[file_numbers[origin[v]] - first_number];
+    colours[v] = CGAL::IO::Color(c[0], c[1], c[2], c[3]);
+  }
+}
+
 } // namespace
+
+std::optional<Colour_map> colours_of(const Surface& mesh)
+{
+  const auto colours = mesh.property_map<Surface::Vertex_index, CGAL::IO::Color>(colour_name);
+  return colours.second ? std::optional<Colour_map>(colours.first) : std::nullopt;
+}
+
+void remove_colours(Surface& mesh)
+{
+  if(std::optional<Colour_map> colours = colours_of(mesh))
+    mesh.remove_property_map(*colours);
+}
 
 bool has_texture_points(const Surface& mesh)
 {
@@ -239,12 +265,15 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
   if(!soup.texture_indices.empty() && repair)
     notes.push_back("ignored the " + std::to_string(soup.texture_points.size()) + " texture coordinates (vt) of '" +
                     path + "': --repair reorders the faces they belong to");
+  if(!soup.colours.empty() && repair)
+    notes.push_back("ignored the vertex colours of '" + path + "': --repair merges and splits vertices");
   if(soup.number_of_faces() == 0)
     throw Input_error("'" + path + "' holds no faces");
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   std::vector<std::size_t> file_numbers; // of the vertices kept (OBJ counts from 1)
-  to_cgal_soup(soup, path, format == Mesh_format::obj ? 1 : 0, points, polygons, file_numbers, notes);
+  const std::size_t first_number = format == Mesh_format::obj ? 1 : 0;
+  to_cgal_soup(soup, path, first_number, points, polygons, file_numbers, notes);
   namespace PMP = CGAL::Polygon_mesh_processing;
   if(repair) {
     PMP::repair_polygon_soup(points, polygons);
@@ -258,6 +287,7 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     std::vector<std::size_t> origin; // the point of every vertex of the mesh
     Surface mesh = split_soup(points, polygons, path, notes, file_numbers, file_numbers_out, origin);
     add_texture_points(mesh, soup, polygons, origin);
+    add_colours(mesh, soup, file_numbers, first_number, origin);
     return mesh;
   }
   if(!manifold) {
@@ -273,13 +303,14 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     notes.push_back("read '" + path +
                     "' as a repaired, oriented polygon soup: " + std::to_string(mesh.number_of_vertices()) + " V, " +
                     std::to_string(mesh.number_of_edges()) + " E, " + std::to_string(mesh.number_of_faces()) + " F");
-  if(file_numbers_out) // polygon_soup_to_polygon_mesh makes vertex i of point i
-    *file_numbers_out = std::move(file_numbers);
-  if(!repair) {
+  if(!repair) { // polygon_soup_to_polygon_mesh makes vertex i of point i
     std::vector<std::size_t> origin(points.size());
     std::iota(origin.begin(), origin.end(), std::size_t(0));
     add_texture_points(mesh, soup, polygons, origin);
+    add_colours(mesh, soup, file_numbers, first_number, origin);
   }
+  if(file_numbers_out)
+    *file_numbers_out = std::move(file_numbers);
   return mesh;
 }
 

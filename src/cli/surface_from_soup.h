@@ -9,7 +9,10 @@
 #include "common.h"
 #include "mesh_soup.h"
 
+#include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -41,6 +44,16 @@ bool has_texture_points(const Surface& mesh);
 /// removes them (for the schemes and options that cannot carry them)
 void remove_texture_points(Surface& mesh);
 
+/// the map the vertex colours of a COFF or PLY file are kept in: CGAL's own
+/// name, which its PLY writer writes as red, green, blue and alpha
+/// (refinement carries it, `CGAL::Subdiv::Carried_data::vertex_map`)
+inline constexpr const char* colour_name = "v:color";
+using Colour_map = Surface::Property_map<Surface::Vertex_index, CGAL::IO::Color>;
+/// the vertex colours of `mesh`, if it has them
+std::optional<Colour_map> colours_of(const Surface& mesh);
+/// removes them (for the options and outputs that cannot carry them)
+void remove_colours(Surface& mesh);
+
 /// what is done with a soup that is not a manifold polygon mesh
 enum class Soup_fix {
   none,              ///< nothing: it is refused, naming the face, edge or vertex at fault
@@ -61,7 +74,9 @@ enum class Soup_fix {
  * vertex have its number); empty with `repair`, which merges and splits
  * vertices. The texture coordinates of an OBJ file whose every face has
  * them go to the maps `texture_point_name` and `texture_index_name`
- * (not with `repair`, which reorders faces: a note says they were ignored).
+ * (not with `repair`, which reorders faces: a note says they were ignored),
+ * and the vertex colours of a COFF or PLY file to the map `colour_name`
+ * (not with `repair` either, which merges vertices).
  * \throws Input_error: no faces, or not a manifold polygon mesh (naming a
  *         face, an edge or a vertex: by its number in the file and its point)
  */

@@ -9,6 +9,7 @@
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <optional>
 #include <type_traits>
 
 namespace cgal_subdiv {
@@ -18,11 +19,28 @@ namespace SD = CGAL::Subdiv;
 
 using Run = std::function<void(Surface&, int, double)>;
 
+// the maps of `mesh` that refinement carries: the vertex colours, with the
+// weights of the points, and the texture coordinates with their seams, in
+// `face_varying` (an empty Carried_data costs nothing: subdivide then takes
+// its plain path)
+SD::Carried_data<Surface, double> carried_maps(const Surface& mesh, SD::Face_varying_interpolation face_varying)
+{
+  SD::Carried_data<Surface, double> carried;
+  if(const std::optional<Colour_map> colours = colours_of(mesh))
+    carried.vertex_map(*colours);
+  if(has_texture_points(mesh))
+    carried.corner_map(mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first,
+                       face_varying, mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first);
+  return carried;
+}
+
 template <class Wrapper>
 Run call(Wrapper wrapper)
 {
   return [wrapper](Surface& mesh, int levels, double max_memory) {
-    wrapper(mesh, SD::parameters::number_of_iterations(levels).max_memory(max_memory));
+    // (texture coordinates take the path with tags, `run_sharp`)
+    const auto carried = carried_maps(mesh, Sharp_options().face_varying);
+    wrapper(mesh, SD::parameters::number_of_iterations(levels).max_memory(max_memory).carried_data(carried));
   };
 }
 
@@ -50,15 +68,9 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
   scheme.carries_texture_points = SD::Carried_data<Surface, double>::carries_corner_maps<Mask>();
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
-      // the texture coordinates, if any, with their seams (an empty
-      // Carried_data costs nothing: subdivide takes its plain path)
-      SD::Carried_data<Surface, double> texture;
-      if(has_texture_points(mesh))
-        texture.corner_map(mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first,
-                           options.face_varying,
-                           mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first);
+      const auto carried = carried_maps(mesh, options.face_varying);
       const auto np =
-        tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory).carried_data(texture);
+        tag_parameters<Mask>(mesh, options).number_of_iterations(levels).max_memory(max_memory).carried_data(carried);
       if constexpr(is_linear_mask<Mask>) // the row of the quad mask, whose call picks the split
         SD::linear_subdivision(mesh, np);
       else

@@ -49,7 +49,8 @@ bool keeps_its_promises(const Mesh_soup& soup)
     for(double c : t)
       if(!std::isfinite(c))
         return false;
-  return true;
+  // colours: none, or one per point
+  return soup.colours.empty() || soup.colours.size() == soup.points.size();
 }
 
 /// "'fuzz' line 12: ...", "'fuzz' byte 80: ..." or STL's "'fuzz': neither ..."
