@@ -8,6 +8,7 @@
 /// displacement, limit stencil tables (they use the analysis' masks).
 
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
+#include <CGAL/Subdiv/limit/face_varying_limit.h>
 #include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 

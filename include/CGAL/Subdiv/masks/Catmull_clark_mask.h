@@ -82,6 +82,14 @@ public:
 
   std::string name() const { return "Catmull-Clark"; }
   Border_corners border_corners() const { return m_corners; }
+  /// the same rules with border corners `corners` (the face-varying limit
+  /// cuts the mesh and keeps its corners by the face-varying mode)
+  Catmull_clark_mask with_border_corners(Border_corners corners) const
+  {
+    Catmull_clark_mask copy(*this);
+    copy.m_corners = corners;
+    return copy;
+  }
   Triangle_subdivision triangle_subdivision() const { return m_triangles; }
   bool is_interpolating() const { return false; }
 

@@ -59,6 +59,14 @@ public:
 
   std::string name() const { return "Loop (" + Beta::name() + " beta)"; }
   Border_corners border_corners() const { return m_corners; }
+  /// the same rules with border corners `corners` (the face-varying limit
+  /// cuts the mesh and keeps its corners by the face-varying mode)
+  Loop_mask with_border_corners(Border_corners corners) const
+  {
+    Loop_mask copy(*this);
+    copy.m_corners = corners;
+    return copy;
+  }
   bool is_interpolating() const { return false; }
 
   template <class Accumulator>

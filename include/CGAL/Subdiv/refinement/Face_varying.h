@@ -17,6 +17,7 @@
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
 #include <CGAL/Subdiv/views/Sharp_level.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -327,6 +328,39 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
 }
 
 /*
+ * The sharpness of every edge and vertex of `topology`'s cut mesh, by ordinal:
+ * the sharpness `tags` of the mesh's level, and the vertices that `mode` keeps
+ * made infinitely sharp (a seam, a border of the cut mesh, is sharp by being
+ * one). The refinement of a level and the face-varying limit both take it.
+ */
+template <class Mesh, class FT>
+Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                                       Face_varying_interpolation mode)
+{
+  using Cut = Face_varying_cut_mesh;
+  using S = typename Sharp_level<Cut, FT>::S;
+  const Cut& cut = topology.cut();
+  Sharpness_by_ordinal<FT> result;
+  result.edges.reserve(cut.number_of_edges());
+  for(const typename Cut::Edge_index e : cut.edges())
+    result.edges.push_back(S(tags.edge_sharpness(topology.edge_of(e))));
+  result.vertices.reserve(cut.number_of_vertices());
+  for(const typename Cut::Vertex_index v : cut.vertices())
+    result.vertices.push_back(is_kept_by(mode, topology, v) ? Sharp_level<Cut, FT>::Rules::infinite()
+                                                            : S(tags.vertex_sharpness(topology.vertex_of(v))));
+  return result;
+}
+
+/// the tags of a level of `mesh` without sharpness tags: its pinned border
+/// corners only (`corners`)
+template <class Mesh, class FT>
+std::unique_ptr<Sharp_level<Mesh, FT>> untagged_level(const Mesh& mesh, Border_corners corners)
+{
+  return std::make_unique<Sharp_level<Mesh, FT>>(
+    mesh, [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, corners);
+}
+
+/*
  * The rows of one level of a corner map whose topology is `topology`,
  * refined by `mask` (a mask that takes sharpness tags, with the tags of the
  * level or none) in a smooth `mode`: the cut mesh takes the level's
@@ -339,23 +373,15 @@ Face_varying_rows<Mesh, FT> smooth_face_varying_rows(const Face_varying_topology
                                                      const Face_varying_row_visitor<FT>& visit)
 {
   using Cut = Face_varying_cut_mesh;
-  using Level = Sharp_level<Cut, FT>;
-  using S = typename Level::S;
-  // the sharpness of the mesh's level: the mask's tags, or none but the pinned corners
-  const Sharp_level<Mesh, FT>* tags = mask.sharp_level();
+  // the mask's tags, or none
   std::unique_ptr<Sharp_level<Mesh, FT>> untagged;
-  if(tags == nullptr) {
-    untagged = std::make_unique<Sharp_level<Mesh, FT>>(
-      topology.mesh(), [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, border_corners_of(mask));
-    tags = untagged.get();
-  }
-  const Level cut_level(
-    topology.cut(), [&](typename Cut::Edge_index e) { return tags->edge_sharpness(topology.edge_of(e)); },
-    [&](typename Cut::Vertex_index v) {
-      return is_kept_by(mode, topology, v) ? Level::Rules::infinite()
-                                           : S(tags->vertex_sharpness(topology.vertex_of(v)));
-    },
-    tags->method(), Border_corners::smooth);
+  if(mask.sharp_level() == nullptr)
+    untagged = untagged_level<Mesh, FT>(topology.mesh(), border_corners_of(mask));
+  const Sharp_level<Mesh, FT>& tags = untagged ? *untagged : *mask.sharp_level();
+  const Sharpness_by_ordinal<FT> sharpness = cut_sharpness(topology, tags, mode);
+  const Sharp_level<Cut, FT> cut_level(
+    topology.cut(), [&](typename Cut::Edge_index e) { return sharpness.edges[e.idx()]; },
+    [&](typename Cut::Vertex_index v) { return sharpness.vertices[v.idx()]; }, tags.method(), Border_corners::smooth);
   return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level), visit);
 }
 
