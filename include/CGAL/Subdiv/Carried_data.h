@@ -127,7 +127,6 @@ public:
   using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
   /// a new face of a level, its parent and its vertices
   using New_face = internal::New_face<Mesh>;
-  /// after the rebuild: writes the values of the corners of the new faces
   /// after the rebuild: writes the value of one corner of a new face, given
   /// its halfedge (into the corner's vertex) and its row in the level
   using Corner_writer = std::function<void(halfedge_descriptor, std::size_t)>;
