@@ -741,20 +741,10 @@ std::vector<Corner_value> corner_values(const Mesh& mesh, const Uv_map& uv)
 bool is_known_face_varying_difference(const std::string& shape, Sd::Face_varying_interpolation mode)
 {
   static const std::set<std::pair<std::string, int>> known = {
-    {"catmark_bishop", 0},        {"catmark_car", 0},           {"catmark_fan", 0},
-    {"catmark_fan", 1},           {"catmark_fan", 2},           {"catmark_fan", 3},
-    {"catmark_fvar_bound4", 0},   {"catmark_fvar_bound4", 1},   {"catmark_fvar_bound4", 2},
-    {"catmark_fvar_bound4", 3},   {"catmark_gregory_test1", 3}, {"catmark_gregory_test4", 0},
-    {"catmark_gregory_test8", 3}, {"catmark_helmet", 0},        {"catmark_lefthanded", 0},
-    {"catmark_lefthanded", 1},    {"catmark_lefthanded", 2},    {"catmark_lefthanded", 3},
-    {"catmark_pawn", 0},          {"catmark_righthanded", 0},   {"catmark_righthanded", 1},
-    {"catmark_righthanded", 2},   {"catmark_righthanded", 3},   {"catmark_rook", 0},
-    {"catmark_val2_interior", 3}, {"loop_cube_creases1", 2},    {"loop_cube_creases1", 3},
-    {"loop_cubes_infsharp", 2},   {"loop_cubes_infsharp", 3},   {"loop_cubes_semisharp", 2},
-    {"loop_cubes_semisharp", 3},  {"loop_fvar_bound3", 0},      {"loop_fvar_bound3", 1},
-    {"loop_fvar_bound3", 2},      {"loop_fvar_bound3", 3},      {"loop_icos_infsharp", 2},
-    {"loop_icos_infsharp", 3},    {"loop_icos_semisharp", 2},   {"loop_icos_semisharp", 3},
-    {"loop_tetrahedron", 3}};
+    {"catmark_bishop", 0},      {"catmark_car", 0},          {"catmark_fan", 0},          {"catmark_fan", 1},
+    {"catmark_fan", 2},         {"catmark_fan", 3},          {"catmark_rook", 0},         {"loop_cube_creases1", 2},
+    {"loop_cube_creases1", 3},  {"loop_cubes_semisharp", 2}, {"loop_cubes_semisharp", 3}, {"loop_icos_semisharp", 2},
+    {"loop_icos_semisharp", 3}};
   return known.count({shape, static_cast<int>(mode)}) > 0;
 }
 

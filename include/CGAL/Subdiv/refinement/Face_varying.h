@@ -25,6 +25,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <numeric>
@@ -138,7 +139,21 @@ public:
     return bool(CGAL::is_border(target(m_corner_of[v], *m_mesh), *m_mesh));
   }
   /// whether another value of v's vertex is equal to v's, across seams on both sides
-  bool is_disjoint(typename Cut::Vertex_index v) const { return m_disjoint[v]; }
+  bool is_disjoint(typename Cut::Vertex_index v) const { return m_first_equal[v] != v.idx() || m_disjoint[v]; }
+  /// the first cut vertex of v's vertex whose value is equal to v's (v, if
+  /// v is not disjoint): OpenSubdiv's one value of the vertex, over sectors
+  /// that seams separate
+  typename Cut::Vertex_index first_equal(typename Cut::Vertex_index v) const
+  {
+    return typename Cut::Vertex_index(static_cast<typename Cut::size_type>(m_first_equal[v]));
+  }
+  /// the cut vertices of the vertex of cut vertex v (v among them)
+  std::pair<const std::size_t*, const std::size_t*> values_of_vertex(typename Cut::Vertex_index v) const
+  {
+    const std::size_t vertex = m_vertex_of[v];
+    const std::size_t* first = m_values_of_vertex.data();
+    return {first + m_value_starts[vertex], first + m_value_starts[vertex + 1]};
+  }
   /// the cut halfedge of corner h (the same edge and face)
   typename Cut::Halfedge_index cut_halfedge(halfedge_descriptor h) const { return m_cut_halfedge[m_number(h)]; }
 
@@ -187,18 +202,27 @@ private:
     // equal values in sectors that seams separate on both sides: the values
     // of each vertex with more than one, grouped by vertex (counting sort)
     m_disjoint.assign(m_corner_of.size(), false);
-    std::vector<std::size_t> starts(num_vertices(mesh) + 1, 0);
+    m_first_equal.resize(m_corner_of.size());
+    std::iota(m_first_equal.begin(), m_first_equal.end(), std::size_t(0));
+    std::vector<std::size_t>& starts = m_value_starts;
+    starts.assign(num_vertices(mesh) + 1, 0);
     for(std::size_t v = 0; v < m_corner_of.size(); ++v)
       ++starts[m_vertex_of[v] + 1];
     std::partial_sum(starts.begin(), starts.end(), starts.begin());
-    std::vector<std::size_t> values_of_vertex(m_corner_of.size()), filled(starts.begin(), starts.end() - 1);
+    std::vector<std::size_t>& values_of_vertex = m_values_of_vertex;
+    values_of_vertex.resize(m_corner_of.size());
+    std::vector<std::size_t> filled(starts.begin(), starts.end() - 1);
     for(std::size_t v = 0; v < m_corner_of.size(); ++v)
       values_of_vertex[filled[m_vertex_of[v]]++] = v;
     for(std::size_t vertex = 0; vertex + 1 < starts.size(); ++vertex)
       for(std::size_t a = starts[vertex]; a < starts[vertex + 1]; ++a)
         for(std::size_t b = a + 1; b < starts[vertex + 1]; ++b)
-          if(same(m_corner_of[values_of_vertex[a]], m_corner_of[values_of_vertex[b]]))
-            m_disjoint[values_of_vertex[a]] = m_disjoint[values_of_vertex[b]] = true;
+          if(m_first_equal[values_of_vertex[b]] == values_of_vertex[b] &&
+             same(m_corner_of[values_of_vertex[a]], m_corner_of[values_of_vertex[b]])) {
+            m_disjoint[values_of_vertex[a]] = true;
+            m_first_equal[values_of_vertex[b]] = m_first_equal[values_of_vertex[a]];
+            --m_values_at[vertex]; // one value, as OpenSubdiv counts them
+          }
   }
 
   void make_cut_mesh()
@@ -239,16 +263,40 @@ private:
   std::vector<halfedge_descriptor> m_corner_of;             // by cut vertex
   std::vector<std::size_t> m_vertex_of;                     // by cut vertex
   std::vector<int> m_values_at;                             // by old vertex ordinal
-  std::vector<bool> m_disjoint;                             // by cut vertex
+  std::vector<bool> m_disjoint;                             // by cut vertex, with a later one equal
+  std::vector<std::size_t> m_first_equal;                   // by cut vertex
+  std::vector<std::size_t> m_value_starts;                  // by old vertex ordinal, into m_values_of_vertex
+  std::vector<std::size_t> m_values_of_vertex;              // cut vertices, grouped by old vertex
   std::vector<std::size_t> m_edge_of;                       // by cut edge
   std::vector<typename Cut::Halfedge_index> m_cut_halfedge; // by halfedge ordinal (corners only)
   Cut m_cut;
 };
 
-/// whether `mode` keeps cut vertex v of `topology` where it is (infinitely sharp)
-template <class Mesh>
+/// the number of faces of cut vertex v, and whether its sector is "disjoint"
+/// as OpenSubdiv says: its value is also another sector's, or an edge inside
+/// it is infinitely sharp
+template <class Mesh, class FT>
+std::pair<int, bool> span_of(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                             typename Face_varying_cut_mesh::Vertex_index v)
+{
+  using Rules = typename Sharp_level<Mesh, FT>::Rules;
+  const Face_varying_cut_mesh& cut = topology.cut();
+  int faces = 0;
+  bool disjoint = topology.is_disjoint(v);
+  for(auto h : CGAL::halfedges_around_target(v, cut)) {
+    faces += CGAL::is_border(h, cut) ? 0 : 1;
+    if(!CGAL::is_border(cut.edge(h), cut))
+      disjoint = disjoint || Rules::is_infinite(tags.edge_sharpness(topology.edge_of(cut.edge(h))));
+  }
+  return {faces, disjoint};
+}
+
+/// whether `mode` keeps cut vertex v of `topology` (with the level's
+/// sharpness `tags`) where it is (infinitely sharp); OpenSubdiv's
+/// `FVarLevel::completeTopologyFromFaceValues` rules
+template <class Mesh, class FT>
 bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mesh>& topology,
-                typename Face_varying_cut_mesh::Vertex_index v)
+                const Sharp_level<Mesh, FT>& tags, typename Face_varying_cut_mesh::Vertex_index v)
 {
   const Face_varying_cut_mesh& cut = topology.cut();
   if(topology.is_disjoint(v))
@@ -256,20 +304,31 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
   const bool on_border = bool(CGAL::is_border(v, cut));
   if(!on_border)
     return false;
-  int faces = 0;
-  for(auto h : CGAL::halfedges_around_target(v, cut))
-    faces += CGAL::is_border(h, cut) ? 0 : 1;
-  const bool corner = faces == 1;
+  const bool corner = span_of(topology, tags, v).first == 1;
+  const int values = topology.values_at_vertex(v);
+  // plus1 and plus2: a value's sharpness depends on the other's, when there
+  // are two: both are kept if either is disjoint, or (plus2) a corner
+  const auto other_value_keeps_both = [&](bool corners_too) {
+    if(values != 2)
+      return false;
+    const auto [first, last] = topology.values_of_vertex(v);
+    for(const std::size_t* w = first; w != last; ++w) {
+      const auto [faces, disjoint] =
+        span_of(topology, tags, typename Face_varying_cut_mesh::Vertex_index(static_cast<std::uint32_t>(*w)));
+      if(disjoint || (corners_too && faces == 1))
+        return true;
+    }
+    return false;
+  };
   switch(mode) {
     case Face_varying_interpolation::none:
       return false;
     case Face_varying_interpolation::corners_only:
       return corner;
     case Face_varying_interpolation::corners_plus1:
-      return corner || topology.values_at_vertex(v) > 2;
+      return corner || values > 2 || other_value_keeps_both(false);
     case Face_varying_interpolation::corners_plus2: // a dart: the one value of an inner vertex, on a seam
-      return corner || topology.values_at_vertex(v) > 2 ||
-             (topology.values_at_vertex(v) == 1 && !topology.is_on_mesh_border(v));
+      return corner || values > 2 || (values == 1 && !topology.is_on_mesh_border(v)) || other_value_keeps_both(true);
     default: // boundaries, all
       return true;
   }
@@ -315,8 +374,10 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
   for(auto f : faces(mesh)) {
     const std::size_t face = number(f);
     for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-      result.entries.push_back(
-        Entry{Origin_kind::vertex, number(target(h, mesh)), row_of_vertex[topology.value_at(h)]});
+      // equal values in sectors that seams separate are one value (kept
+      // where it is), as in OpenSubdiv: one row, so one index
+      result.entries.push_back(Entry{Origin_kind::vertex, number(target(h, mesh)),
+                                     row_of_vertex[topology.first_equal(topology.value_at(h))]});
       result.entries.push_back(
         Entry{Origin_kind::edge, number(h) >> 1, row_of_edge[cut_number(cut.edge(topology.cut_halfedge(h)))]});
     }
@@ -346,7 +407,7 @@ Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topolo
     result.edges.push_back(S(tags.edge_sharpness(topology.edge_of(e))));
   result.vertices.reserve(cut.number_of_vertices());
   for(const typename Cut::Vertex_index v : cut.vertices())
-    result.vertices.push_back(is_kept_by(mode, topology, v) ? Sharp_level<Cut, FT>::Rules::infinite()
+    result.vertices.push_back(is_kept_by(mode, topology, tags, v) ? Sharp_level<Cut, FT>::Rules::infinite()
                                                             : S(tags.vertex_sharpness(topology.vertex_of(v))));
   return result;
 }
