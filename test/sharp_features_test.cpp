@@ -741,9 +741,9 @@ std::vector<Corner_value> corner_values(const Mesh& mesh, const Uv_map& uv)
 bool is_known_face_varying_difference(const std::string& shape, Sd::Face_varying_interpolation mode)
 {
   static const std::set<std::pair<std::string, int>> known = {
-    {"catmark_bishop", 0},      {"catmark_car", 0},          {"catmark_fan", 0},          {"catmark_fan", 1},
-    {"catmark_fan", 2},         {"catmark_fan", 3},          {"catmark_rook", 0},         {"loop_cube_creases1", 2},
-    {"loop_cube_creases1", 3},  {"loop_cubes_semisharp", 2}, {"loop_cubes_semisharp", 3}, {"loop_icos_semisharp", 2},
+    {"catmark_bishop", 0},     {"catmark_car", 0},          {"catmark_fan", 0},          {"catmark_fan", 1},
+    {"catmark_fan", 2},        {"catmark_fan", 3},          {"catmark_rook", 0},         {"loop_cube_creases1", 2},
+    {"loop_cube_creases1", 3}, {"loop_cubes_semisharp", 2}, {"loop_cubes_semisharp", 3}, {"loop_icos_semisharp", 2},
     {"loop_icos_semisharp", 3}};
   return known.count({shape, static_cast<int>(mode)}) > 0;
 }

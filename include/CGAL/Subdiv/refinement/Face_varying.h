@@ -376,8 +376,8 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
     for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
       // equal values in sectors that seams separate are one value (kept
       // where it is), as in OpenSubdiv: one row, so one index
-      result.entries.push_back(Entry{Origin_kind::vertex, number(target(h, mesh)),
-                                     row_of_vertex[topology.first_equal(topology.value_at(h))]});
+      result.entries.push_back(
+        Entry{Origin_kind::vertex, number(target(h, mesh)), row_of_vertex[topology.first_equal(topology.value_at(h))]});
       result.entries.push_back(
         Entry{Origin_kind::edge, number(h) >> 1, row_of_edge[cut_number(cut.edge(topology.cut_halfedge(h)))]});
     }
@@ -408,7 +408,7 @@ Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topolo
   result.vertices.reserve(cut.number_of_vertices());
   for(const typename Cut::Vertex_index v : cut.vertices())
     result.vertices.push_back(is_kept_by(mode, topology, tags, v) ? Sharp_level<Cut, FT>::Rules::infinite()
-                                                            : S(tags.vertex_sharpness(topology.vertex_of(v))));
+                                                                  : S(tags.vertex_sharpness(topology.vertex_of(v))));
   return result;
 }
 
