@@ -298,7 +298,8 @@ public:
     template <class Mask>
     Corner_level read_channel(const Corner_channel& channel, const Mask& mask)
     {
-      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
+      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same, !channel.refined);
+      channel.refined = true;
       std::vector<Corner_map_level> maps;
       for(const auto& start : channel.maps)
         maps.push_back(start(topology));
@@ -456,6 +457,9 @@ private:
     /// whether two corners hold the same value (the same index, with an index map)
     std::function<bool(halfedge_descriptor, halfedge_descriptor)> same;
     std::vector<Corner_map_start> maps;
+    /// whether a level was carried: the values of the first one are told
+    /// apart as on OpenSubdiv's base level, and inherited after
+    mutable bool refined = false;
   };
 
   // a map of values: the new value of a row is the combination of the old

@@ -112,12 +112,22 @@ class Face_varying_topology
   using Cut = Face_varying_cut_mesh;
 
 public:
-  /// `same(h, g)`: whether corners h and g (halfedges, into their vertex) hold equal values
-  Face_varying_topology(const Mesh& mesh, const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  /// `same(h, g)`: whether corners h and g (halfedges, into their vertex)
+  /// hold equal values. On the `base_level` of a channel (the mesh it is
+  /// first carried from), the values of a vertex are told apart as OpenSubdiv
+  /// tells them apart on its base level (`join_values_as_opensubdiv`); on
+  /// the levels it refines, equal values are one value
+  Face_varying_topology(const Mesh& mesh, const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same,
+                        bool base_level = false)
     : m_mesh(&mesh), m_number(mesh)
   {
     join_corners(same);
-    make_values(same);
+    make_values();
+    group_values_by_vertex();
+    for(std::size_t vertex = 0; vertex < num_vertices(mesh); ++vertex)
+      if(m_value_starts[vertex + 1] - m_value_starts[vertex] > 1 &&
+         !(base_level && join_values_as_opensubdiv(vertex, same)))
+        join_equal_values(vertex, same);
     make_cut_mesh();
   }
 
@@ -180,7 +190,8 @@ private:
       }
   }
 
-  void make_values(const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  // a value (a vertex of the cut mesh) for every group of joined corners
+  void make_values()
   {
     const Mesh& mesh = *m_mesh;
     const std::size_t none = static_cast<std::size_t>(-1);
@@ -199,30 +210,108 @@ private:
         }
         m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
       }
-    // equal values in sectors that seams separate on both sides: the values
-    // of each vertex with more than one, grouped by vertex (counting sort)
     m_disjoint.assign(m_corner_of.size(), false);
     m_first_equal.resize(m_corner_of.size());
     std::iota(m_first_equal.begin(), m_first_equal.end(), std::size_t(0));
+  }
+
+  // the values of every vertex, in order (a counting sort)
+  void group_values_by_vertex()
+  {
     std::vector<std::size_t>& starts = m_value_starts;
-    starts.assign(num_vertices(mesh) + 1, 0);
+    starts.assign(num_vertices(*m_mesh) + 1, 0);
     for(std::size_t v = 0; v < m_corner_of.size(); ++v)
       ++starts[m_vertex_of[v] + 1];
     std::partial_sum(starts.begin(), starts.end(), starts.begin());
-    std::vector<std::size_t>& values_of_vertex = m_values_of_vertex;
-    values_of_vertex.resize(m_corner_of.size());
+    m_values_of_vertex.resize(m_corner_of.size());
     std::vector<std::size_t> filled(starts.begin(), starts.end() - 1);
     for(std::size_t v = 0; v < m_corner_of.size(); ++v)
-      values_of_vertex[filled[m_vertex_of[v]]++] = v;
-    for(std::size_t vertex = 0; vertex + 1 < starts.size(); ++vertex)
-      for(std::size_t a = starts[vertex]; a < starts[vertex + 1]; ++a)
-        for(std::size_t b = a + 1; b < starts[vertex + 1]; ++b)
-          if(m_first_equal[values_of_vertex[b]] == values_of_vertex[b] &&
-             same(m_corner_of[values_of_vertex[a]], m_corner_of[values_of_vertex[b]])) {
-            m_disjoint[values_of_vertex[a]] = true;
-            m_first_equal[values_of_vertex[b]] = m_first_equal[values_of_vertex[a]];
-            --m_values_at[vertex]; // one value, as OpenSubdiv counts them
-          }
+      m_values_of_vertex[filled[m_vertex_of[v]]++] = v;
+  }
+
+  // values a and b of `vertex` (cut vertices) are one value: the first of
+  // them stands for both
+  void join_values(std::size_t vertex, std::size_t a, std::size_t b)
+  {
+    std::size_t first = m_first_equal[a], other = m_first_equal[b];
+    if(first == other)
+      return;
+    if(other < first)
+      std::swap(first, other);
+    for(std::size_t k = m_value_starts[vertex]; k < m_value_starts[vertex + 1]; ++k)
+      if(m_first_equal[m_values_of_vertex[k]] == other)
+        m_first_equal[m_values_of_vertex[k]] = first;
+    m_disjoint[first] = true;
+    m_disjoint[other] = false;
+    --m_values_at[vertex]; // one value, as OpenSubdiv counts them
+  }
+
+  // equal values in sectors that seams separate on both sides are one value
+  void join_equal_values(std::size_t vertex, const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  {
+    for(std::size_t a = m_value_starts[vertex]; a < m_value_starts[vertex + 1]; ++a)
+      for(std::size_t b = a + 1; b < m_value_starts[vertex + 1]; ++b)
+        if(same(m_corner_of[m_values_of_vertex[a]], m_corner_of[m_values_of_vertex[b]]))
+          join_values(vertex, m_values_of_vertex[a], m_values_of_vertex[b]);
+  }
+
+  /*
+   * The values of `vertex` as OpenSubdiv's base level numbers them
+   * (`Vtr::internal::FVarLevel::completeTopologyFromFaceValues`): walking
+   * around the vertex from its first face (the one after the border, or the
+   * lowest face index inside), a corner whose value differs from the
+   * previous corner's is a new value unless found among those met before;
+   * but while only two are met, it is compared with the first one only. So
+   * with values A B A B around a vertex, Far has A once (in two sectors: kept)
+   * and B twice (two creases), which this follows. False (nothing done)
+   * where the walk does not meet every corner.
+   */
+  bool join_values_as_opensubdiv(std::size_t vertex,
+                                 const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same)
+  {
+    const Mesh& mesh = *m_mesh;
+    const halfedge_descriptor any = m_corner_of[m_values_of_vertex[m_value_starts[vertex]]];
+    // the first corner: after the border, else in the lowest face
+    halfedge_descriptor first = any;
+    std::size_t corner_count = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(any, mesh)) {
+      if(CGAL::is_border(h, mesh))
+        continue;
+      ++corner_count;
+      if(CGAL::is_border(opposite(next(h, mesh), mesh), mesh) ||
+         (!CGAL::is_border(opposite(next(first, mesh), mesh), mesh) &&
+          m_number(face(h, mesh)) < m_number(face(first, mesh))))
+        first = h;
+    }
+    // the corners in Far's order: across the edge into the vertex
+    std::vector<halfedge_descriptor> corners{first};
+    for(halfedge_descriptor h = first; corners.size() <= corner_count;) {
+      const halfedge_descriptor across = opposite(h, mesh);
+      if(CGAL::is_border(across, mesh) || prev(across, mesh) == first)
+        break;
+      h = prev(across, mesh);
+      corners.push_back(h);
+    }
+    if(corners.size() != corner_count)
+      return false;
+    std::vector<halfedge_descriptor> met{first}; // a corner of every value met
+    std::vector<std::size_t> value_of_sibling{value_at(first)};
+    std::size_t sibling = 0;
+    for(std::size_t i = 1; i < corners.size(); ++i) {
+      if(!same(corners[i], corners[i - 1])) {
+        sibling = met.size();
+        if(met.size() > 2 || (met.size() == 2 && same(met[0], corners[i])))
+          sibling = static_cast<std::size_t>(
+            std::find_if(met.begin(), met.end(), [&](halfedge_descriptor m) { return same(m, corners[i]); }) -
+            met.begin());
+        if(sibling == met.size()) {
+          met.push_back(corners[i]);
+          value_of_sibling.push_back(value_at(corners[i]));
+        }
+      }
+      join_values(vertex, value_of_sibling[sibling], value_at(corners[i]));
+    }
+    return true;
   }
 
   void make_cut_mesh()
@@ -263,7 +352,7 @@ private:
   std::vector<halfedge_descriptor> m_corner_of;             // by cut vertex
   std::vector<std::size_t> m_vertex_of;                     // by cut vertex
   std::vector<int> m_values_at;                             // by old vertex ordinal
-  std::vector<bool> m_disjoint;                             // by cut vertex, with a later one equal
+  std::vector<bool> m_disjoint;                             // by cut vertex: the first of several equal
   std::vector<std::size_t> m_first_equal;                   // by cut vertex
   std::vector<std::size_t> m_value_starts;                  // by old vertex ordinal, into m_values_of_vertex
   std::vector<std::size_t> m_values_of_vertex;              // cut vertices, grouped by old vertex
@@ -388,6 +477,61 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
   return result;
 }
 
+/// whether an edge inside the sector of cut vertex v (not a seam) is semi-sharp in `tags`
+template <class Mesh, class FT>
+bool has_semi_sharp_inner_edge(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                               typename Face_varying_cut_mesh::Vertex_index v)
+{
+  using Rules = typename Sharp_level<Mesh, FT>::Rules;
+  const Face_varying_cut_mesh& cut = topology.cut();
+  for(auto h : CGAL::halfedges_around_target(v, cut))
+    if(!CGAL::is_border(cut.edge(h), cut) && Rules::is_semi_sharp(tags.edge_sharpness(topology.edge_of(cut.edge(h)))))
+      return true;
+  return false;
+}
+
+/*
+ * OpenSubdiv's "dependent sharpness" (`corners_plus1`, `corners_plus2`): of
+ * the two values of a vertex (not itself sharp), when an edge inside the
+ * sector of one (the leader) is semi-sharp and none inside the other's, the
+ * other follows the leader. It is kept while the leader is a corner, and
+ * when the leader turns into a crease, it is blended with the leader's
+ * weight: its vertex sharpness in `sharpness` is that weight (at most 1, so
+ * that it too turns into a crease).
+ */
+template <class Mesh, class FT>
+void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                              Sharpness_by_ordinal<FT>& sharpness)
+{
+  using Cut = Face_varying_cut_mesh;
+  using Rules = typename Sharp_level<Cut, FT>::Rules;
+  using S = typename Sharp_level<Cut, FT>::S;
+  const Cut& cut = topology.cut();
+  std::vector<std::pair<typename Cut::Vertex_index, typename Cut::Vertex_index>> followers; // (follower, leader)
+  for(const typename Cut::Vertex_index v : cut.vertices()) {
+    if(topology.values_at_vertex(v) != 2 || Rules::is_sharp(sharpness.vertices[v.idx()]) ||
+       has_semi_sharp_inner_edge(topology, tags, v))
+      continue;
+    const auto [first, last] = topology.values_of_vertex(v);
+    for(const std::size_t* w = first; w != last; ++w) {
+      const typename Cut::Vertex_index leader(static_cast<std::uint32_t>(*w));
+      if(topology.first_equal(leader) != topology.first_equal(v) && has_semi_sharp_inner_edge(topology, tags, leader))
+        followers.emplace_back(v, leader);
+    }
+  }
+  if(followers.empty())
+    return;
+  const Sharp_level<Cut, FT> level(
+    cut, [&](typename Cut::Edge_index e) { return sharpness.edges[e.idx()]; },
+    [&](typename Cut::Vertex_index v) { return sharpness.vertices[v.idx()]; }, tags.method(), Border_corners::smooth);
+  for(const auto& [follower, leader] : followers) {
+    const Sharp_vertex<Cut>& rules = level.record(leader.idx());
+    if(rules.rule == Vertex_rule::corner)
+      sharpness.vertices[follower.idx()] =
+        rules.child_rule == Vertex_rule::corner ? Rules::infinite() : S(level.vertex_weight(leader.idx()));
+  }
+}
+
 /*
  * The sharpness of every edge and vertex of `topology`'s cut mesh, by ordinal:
  * the sharpness `tags` of the mesh's level, and the vertices that `mode` keeps
@@ -409,6 +553,8 @@ Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topolo
   for(const typename Cut::Vertex_index v : cut.vertices())
     result.vertices.push_back(is_kept_by(mode, topology, tags, v) ? Sharp_level<Cut, FT>::Rules::infinite()
                                                                   : S(tags.vertex_sharpness(topology.vertex_of(v))));
+  if(mode == Face_varying_interpolation::corners_plus1 || mode == Face_varying_interpolation::corners_plus2)
+    sharpen_dependent_values(topology, tags, result);
   return result;
 }
 

@@ -117,6 +117,8 @@ public:
     return view;
   }
 
+  /// the rules of vertex i (ordinal) on this level and the next
+  const Sharp_vertex<Mesh>& record(std::size_t i) const { return m_records[i]; }
   /// the weight of the rule of this level in the blend of a vertex whose
   /// rule changes (`Vertex_view::ordinal()`)
   const FT& vertex_weight(std::size_t i) const { return m_vertex_weight[i]; }
