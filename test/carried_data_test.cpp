@@ -772,3 +772,84 @@ TEST(CarriedData, a_polyhedron_carries_corner_maps_and_provenance_as_a_surface_m
 }
 
 } // namespace
+
+namespace {
+
+/// the corners at the vertex at `p` of `mesh`, in the order of the faces, with their value and index
+template <class UvMap, class IndexMap>
+std::vector<std::pair<KE::Point_2, std::size_t>> corners_at(const Exact_mesh& mesh, const KE::Point_3& p,
+                                                            const UvMap& uv, const IndexMap& index)
+{
+  std::vector<std::pair<KE::Point_2, std::size_t>> result;
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      if(mesh.point(target(h, mesh)) == p)
+        result.emplace_back(uv[h], index[h]);
+  return result;
+}
+
+} // namespace
+
+// Around the middle vertex of a 2x2 grid of quads, each quad its own UV
+// island, the corners hold A B A B (A in faces 0 and 2, B in 1 and 3, by
+// index). As on OpenSubdiv's base level (doc/provenance.md, "Face-varying
+// data"), A is one value over two sectors, kept where it is with one index;
+// B, met again after A, is two values, each refined as a crease of its face
+// (3/4 of it and 1/8 of each neighbour in the face). Exact, 2 levels of
+// Catmull-Clark in `none`: the second level keeps what the first made.
+TEST(CarriedData, values_around_a_vertex_are_told_apart_as_on_opensubdivs_base_level)
+{
+  Exact_mesh mesh;
+  std::vector<Exact_mesh::Vertex_index> v;
+  for(int y = 0; y < 3; ++y)
+    for(int x = 0; x < 3; ++x)
+      v.push_back(mesh.add_vertex(KE::Point_3(x, y, 0)));
+  const int quads[4][4] = {{0, 1, 4, 3}, {1, 2, 5, 4}, {4, 5, 8, 7}, {3, 4, 7, 6}};
+  for(const auto& q : quads)
+    mesh.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
+  auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, KE::Point_2>("h:uv").first;
+  auto index = mesh.add_property_map<Exact_mesh::Halfedge_index, std::size_t>("h:uv_index").first;
+  const KE::Point_2 a(100, 0), b(200, 0);
+  std::size_t next_index = 2; // 0: A, 1: B
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const KE::Point_3& p = mesh.point(target(h, mesh));
+      if(target(h, mesh) == v[4]) {
+        uv[h] = f.idx() % 2 == 0 ? a : b;
+        index[h] = f.idx() % 2;
+      } else {
+        uv[h] = KE::Point_2(p.x() + 10 * int(f.idx()), p.y());
+        index[h] = next_index++;
+      }
+    }
+  // B's crease in face 1: 3/4 B and 1/8 of (2, 1) + 10 and (1, 0) + 10; in face 3, of (1, 2) + 30 and (0, 1) + 30
+  const KE::Point_2 b_in_face_1(KE::FT(150) + KE::FT(23, 8), KE::FT(1, 8)),
+    b_in_face_3(KE::FT(150) + KE::FT(61, 8), KE::FT(3, 8));
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::none, index);
+  for(int level = 1; level <= 2; ++level) {
+    SCOPED_TRACE("level " + std::to_string(level));
+    S::catmull_clark_subdivision(mesh, S::parameters::carried_data(data));
+    // the middle vertex stays where it is (a symmetric grid)
+    const auto corners = corners_at(mesh, KE::Point_3(1, 1, 0), uv, index);
+    ASSERT_EQ(corners.size(), 4u);
+    std::map<std::size_t, std::vector<KE::Point_2>> by_index;
+    for(const auto& [value, i] : corners)
+      by_index[i].push_back(value);
+    ASSERT_EQ(by_index.size(), 3u); // A once, B twice
+    std::vector<KE::Point_2> singles;
+    for(const auto& [i, values] : by_index)
+      if(values.size() == 2) {
+        EXPECT_EQ(values[0], a);
+        EXPECT_EQ(values[1], a);
+      } else {
+        singles.push_back(values.front());
+      }
+    ASSERT_EQ(singles.size(), 2u);
+    std::sort(singles.begin(), singles.end());
+    if(level == 1) {
+      EXPECT_EQ(singles[0], b_in_face_1);
+      EXPECT_EQ(singles[1], b_in_face_3);
+    }
+  }
+}
