@@ -291,7 +291,7 @@ public:
     // once, every row going to each of its maps
     struct Corner_level
     {
-      std::shared_ptr<const Face_varying_rows> rows;
+      Face_varying_rows rows;
       std::vector<Corner_writer> writers;
     };
 
@@ -316,7 +316,7 @@ public:
         // linear in every face (the linear schemes are linear in every mode)
         return internal::linear_face_varying_rows<Mesh, FT>(topology, linear_mask(mask), visit);
       };
-      result.rows = std::make_shared<const Face_varying_rows>(refine());
+      result.rows = refine();
       for(Corner_map_level& map : maps)
         result.writers.push_back(std::move(map.write));
       return result;
@@ -334,7 +334,7 @@ public:
             const halfedge_descriptor h = level.halfedge(corners[i == 0 ? size - 1 : i - 1].halfedge);
             const Vertex_origin& origin = m_new_origins[corners[i].vertex];
             for(const Corner_level& channel : m_corner_levels) {
-              const std::size_t row = channel.rows->row_of(parent, origin);
+              const std::size_t row = channel.rows.row_of(parent, origin);
               for(const Corner_writer& write : channel.writers)
                 write(h, row);
             }

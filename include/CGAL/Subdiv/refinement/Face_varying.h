@@ -24,6 +24,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -284,7 +285,8 @@ private:
         first = h;
     }
     // the corners in Far's order: across the edge into the vertex
-    std::vector<halfedge_descriptor> corners{first};
+    std::vector<halfedge_descriptor>& corners = m_walk;
+    corners.assign(1, first);
     for(halfedge_descriptor h = first; corners.size() <= corner_count;) {
       const halfedge_descriptor across = opposite(h, mesh);
       if(CGAL::is_border(across, mesh) || prev(across, mesh) == first)
@@ -294,8 +296,10 @@ private:
     }
     if(corners.size() != corner_count)
       return false;
-    std::vector<halfedge_descriptor> met{first}; // a corner of every value met
-    std::vector<std::size_t> value_of_sibling{value_at(first)};
+    std::vector<halfedge_descriptor>& met = m_met; // a corner of every value met
+    met.assign(1, first);
+    std::vector<std::size_t>& value_of_sibling = m_value_of_sibling;
+    value_of_sibling.assign(1, value_at(first));
     std::size_t sibling = 0;
     for(std::size_t i = 1; i < corners.size(); ++i) {
       if(!same(corners[i], corners[i - 1])) {
@@ -347,37 +351,46 @@ private:
 
   const Mesh* m_mesh;
   Mesh_numbering<Mesh> m_number;
-  std::vector<std::size_t> m_parent;                        // union-find over the corners, by halfedge ordinal
-  std::vector<typename Cut::Vertex_index> m_value_of;       // by halfedge ordinal (corners only)
-  std::vector<halfedge_descriptor> m_corner_of;             // by cut vertex
-  std::vector<std::size_t> m_vertex_of;                     // by cut vertex
-  std::vector<int> m_values_at;                             // by old vertex ordinal
-  std::vector<bool> m_disjoint;                             // by cut vertex: the first of several equal
-  std::vector<std::size_t> m_first_equal;                   // by cut vertex
-  std::vector<std::size_t> m_value_starts;                  // by old vertex ordinal, into m_values_of_vertex
-  std::vector<std::size_t> m_values_of_vertex;              // cut vertices, grouped by old vertex
+  std::vector<std::size_t> m_parent;                  // union-find over the corners, by halfedge ordinal
+  std::vector<typename Cut::Vertex_index> m_value_of; // by halfedge ordinal (corners only)
+  std::vector<halfedge_descriptor> m_corner_of;       // by cut vertex
+  std::vector<std::size_t> m_vertex_of;               // by cut vertex
+  std::vector<int> m_values_at;                       // by old vertex ordinal
+  std::vector<bool> m_disjoint;                       // by cut vertex: the first of several equal
+  std::vector<std::size_t> m_first_equal;             // by cut vertex
+  std::vector<std::size_t> m_value_starts;            // by old vertex ordinal, into m_values_of_vertex
+  std::vector<std::size_t> m_values_of_vertex;        // cut vertices, grouped by old vertex
+  // the scratch of join_values_as_opensubdiv, reused from vertex to vertex
+  std::vector<halfedge_descriptor> m_walk, m_met;
+  std::vector<std::size_t> m_value_of_sibling;
   std::vector<std::size_t> m_edge_of;                       // by cut edge
   std::vector<typename Cut::Halfedge_index> m_cut_halfedge; // by halfedge ordinal (corners only)
   Cut m_cut;
 };
 
-/// the number of faces of cut vertex v, and whether its sector is "disjoint"
-/// as OpenSubdiv says: its value is also another sector's, or an edge inside
-/// it is infinitely sharp
+/// the number of faces of cut vertex v (its sector)
+inline int faces_of(const Face_varying_cut_mesh& cut, typename Face_varying_cut_mesh::Vertex_index v)
+{
+  int faces = 0;
+  for(auto h : CGAL::halfedges_around_target(v, cut))
+    faces += CGAL::is_border(h, cut) ? 0 : 1;
+  return faces;
+}
+
+/// whether the sector of cut vertex v is "disjoint" as OpenSubdiv says: its
+/// value is also another sector's, or an edge inside it is infinitely sharp
 template <class Mesh, class FT>
-std::pair<int, bool> span_of(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
-                             typename Face_varying_cut_mesh::Vertex_index v)
+bool is_disjoint_sector(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                        typename Face_varying_cut_mesh::Vertex_index v)
 {
   using Rules = typename Sharp_level<Mesh, FT>::Rules;
   const Face_varying_cut_mesh& cut = topology.cut();
-  int faces = 0;
-  bool disjoint = topology.is_disjoint(v);
-  for(auto h : CGAL::halfedges_around_target(v, cut)) {
-    faces += CGAL::is_border(h, cut) ? 0 : 1;
-    if(!CGAL::is_border(cut.edge(h), cut))
-      disjoint = disjoint || Rules::is_infinite(tags.edge_sharpness(topology.edge_of(cut.edge(h))));
-  }
-  return {faces, disjoint};
+  if(topology.is_disjoint(v))
+    return true;
+  for(auto h : CGAL::halfedges_around_target(v, cut))
+    if(!CGAL::is_border(cut.edge(h), cut) && Rules::is_infinite(tags.edge_sharpness(topology.edge_of(cut.edge(h)))))
+      return true;
+  return false;
 }
 
 /// whether `mode` keeps cut vertex v of `topology` (with the level's
@@ -393,7 +406,7 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
   const bool on_border = bool(CGAL::is_border(v, cut));
   if(!on_border)
     return false;
-  const bool corner = span_of(topology, tags, v).first == 1;
+  const bool corner = faces_of(cut, v) == 1;
   const int values = topology.values_at_vertex(v);
   // plus1 and plus2: a value's sharpness depends on the other's, when there
   // are two: both are kept if either is disjoint, or (plus2) a corner
@@ -402,9 +415,8 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
       return false;
     const auto [first, last] = topology.values_of_vertex(v);
     for(const std::size_t* w = first; w != last; ++w) {
-      const auto [faces, disjoint] =
-        span_of(topology, tags, typename Face_varying_cut_mesh::Vertex_index(static_cast<std::uint32_t>(*w)));
-      if(disjoint || (corners_too && faces == 1))
+      const typename Face_varying_cut_mesh::Vertex_index value(static_cast<std::uint32_t>(*w));
+      if((corners_too && faces_of(cut, value) == 1) || is_disjoint_sector(topology, tags, value))
         return true;
     }
     return false;
@@ -506,6 +518,9 @@ void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const
   using Cut = Face_varying_cut_mesh;
   using Rules = typename Sharp_level<Cut, FT>::Rules;
   using S = typename Sharp_level<Cut, FT>::S;
+  // (a level without semi-sharp edges has none: the usual case, in one pass)
+  if(std::none_of(sharpness.edges.begin(), sharpness.edges.end(), [](const S& e) { return Rules::is_semi_sharp(e); }))
+    return;
   const Cut& cut = topology.cut();
   std::vector<std::pair<typename Cut::Vertex_index, typename Cut::Vertex_index>> followers; // (follower, leader)
   for(const typename Cut::Vertex_index v : cut.vertices()) {
