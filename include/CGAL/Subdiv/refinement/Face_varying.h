@@ -377,20 +377,28 @@ inline int faces_of(const Face_varying_cut_mesh& cut, typename Face_varying_cut_
   return faces;
 }
 
+/// whether an edge inside the sector of cut vertex v (not a seam) has a
+/// sharpness in `tags` that passes `test`
+template <class Mesh, class FT, class Test>
+bool has_inner_edge(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+                    typename Face_varying_cut_mesh::Vertex_index v, const Test& test)
+{
+  const Face_varying_cut_mesh& cut = topology.cut();
+  for(auto h : CGAL::halfedges_around_target(v, cut))
+    if(!CGAL::is_border(cut.edge(h), cut) && test(tags.edge_sharpness(topology.edge_of(cut.edge(h)))))
+      return true;
+  return false;
+}
+
 /// whether the sector of cut vertex v is "disjoint" as OpenSubdiv says: its
 /// value is also another sector's, or an edge inside it is infinitely sharp
 template <class Mesh, class FT>
 bool is_disjoint_sector(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
                         typename Face_varying_cut_mesh::Vertex_index v)
 {
-  using Rules = typename Sharp_level<Mesh, FT>::Rules;
-  const Face_varying_cut_mesh& cut = topology.cut();
-  if(topology.is_disjoint(v))
-    return true;
-  for(auto h : CGAL::halfedges_around_target(v, cut))
-    if(!CGAL::is_border(cut.edge(h), cut) && Rules::is_infinite(tags.edge_sharpness(topology.edge_of(cut.edge(h)))))
-      return true;
-  return false;
+  using Level = Sharp_level<Mesh, FT>;
+  return topology.is_disjoint(v) ||
+         has_inner_edge(topology, tags, v, [](const typename Level::S& s) { return Level::Rules::is_infinite(s); });
 }
 
 /// whether `mode` keeps cut vertex v of `topology` (with the level's
@@ -489,19 +497,6 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
   return result;
 }
 
-/// whether an edge inside the sector of cut vertex v (not a seam) is semi-sharp in `tags`
-template <class Mesh, class FT>
-bool has_semi_sharp_inner_edge(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
-                               typename Face_varying_cut_mesh::Vertex_index v)
-{
-  using Rules = typename Sharp_level<Mesh, FT>::Rules;
-  const Face_varying_cut_mesh& cut = topology.cut();
-  for(auto h : CGAL::halfedges_around_target(v, cut))
-    if(!CGAL::is_border(cut.edge(h), cut) && Rules::is_semi_sharp(tags.edge_sharpness(topology.edge_of(cut.edge(h)))))
-      return true;
-  return false;
-}
-
 /*
  * OpenSubdiv's "dependent sharpness" (`corners_plus1`, `corners_plus2`): of
  * the two values of a vertex (not itself sharp), when an edge inside the
@@ -518,19 +513,20 @@ void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const
   using Cut = Face_varying_cut_mesh;
   using Rules = typename Sharp_level<Cut, FT>::Rules;
   using S = typename Sharp_level<Cut, FT>::S;
+  const auto semi_sharp = [](const S& s) { return Rules::is_semi_sharp(s); };
   // (a level without semi-sharp edges has none: the usual case, in one pass)
-  if(std::none_of(sharpness.edges.begin(), sharpness.edges.end(), [](const S& e) { return Rules::is_semi_sharp(e); }))
+  if(std::none_of(sharpness.edges.begin(), sharpness.edges.end(), semi_sharp))
     return;
   const Cut& cut = topology.cut();
   std::vector<std::pair<typename Cut::Vertex_index, typename Cut::Vertex_index>> followers; // (follower, leader)
   for(const typename Cut::Vertex_index v : cut.vertices()) {
     if(topology.values_at_vertex(v) != 2 || Rules::is_sharp(sharpness.vertices[v.idx()]) ||
-       has_semi_sharp_inner_edge(topology, tags, v))
+       has_inner_edge(topology, tags, v, semi_sharp))
       continue;
     const auto [first, last] = topology.values_of_vertex(v);
     for(const std::size_t* w = first; w != last; ++w) {
       const typename Cut::Vertex_index leader(static_cast<std::uint32_t>(*w));
-      if(topology.first_equal(leader) != topology.first_equal(v) && has_semi_sharp_inner_edge(topology, tags, leader))
+      if(topology.first_equal(leader) != topology.first_equal(v) && has_inner_edge(topology, tags, leader, semi_sharp))
         followers.emplace_back(v, leader);
     }
   }
