@@ -150,7 +150,11 @@ public:
     return bool(CGAL::is_border(target(m_corner_of[v], *m_mesh), *m_mesh));
   }
   /// whether another value of v's vertex is equal to v's, across seams on both sides
-  bool is_disjoint(typename Cut::Vertex_index v) const { return m_first_equal[v] != v.idx() || m_disjoint[v]; }
+  bool is_disjoint(typename Cut::Vertex_index v) const
+  {
+    const auto [first, last] = values_of_vertex(v);
+    return std::count_if(first, last, [&](std::size_t w) { return m_first_equal[w] == m_first_equal[v]; }) > 1;
+  }
   /// the first cut vertex of v's vertex whose value is equal to v's (v, if
   /// v is not disjoint): OpenSubdiv's one value of the vertex, over sectors
   /// that seams separate
@@ -211,7 +215,6 @@ private:
         }
         m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
       }
-    m_disjoint.assign(m_corner_of.size(), false);
     m_first_equal.resize(m_corner_of.size());
     std::iota(m_first_equal.begin(), m_first_equal.end(), std::size_t(0));
   }
@@ -242,8 +245,6 @@ private:
     for(std::size_t k = m_value_starts[vertex]; k < m_value_starts[vertex + 1]; ++k)
       if(m_first_equal[m_values_of_vertex[k]] == other)
         m_first_equal[m_values_of_vertex[k]] = first;
-    m_disjoint[first] = true;
-    m_disjoint[other] = false;
     --m_values_at[vertex]; // one value, as OpenSubdiv counts them
   }
 
@@ -272,18 +273,18 @@ private:
   {
     const Mesh& mesh = *m_mesh;
     const halfedge_descriptor any = m_corner_of[m_values_of_vertex[m_value_starts[vertex]]];
-    // the first corner: after the border, else in the lowest face
+    // the first corner: the one after the border, else the one in the lowest face
+    const auto after_border = [&](halfedge_descriptor h) {
+      return CGAL::is_border(opposite(next(h, mesh), mesh), mesh);
+    };
     halfedge_descriptor first = any;
     std::size_t corner_count = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(any, mesh)) {
-      if(CGAL::is_border(h, mesh))
-        continue;
-      ++corner_count;
-      if(CGAL::is_border(opposite(next(h, mesh), mesh), mesh) ||
-         (!CGAL::is_border(opposite(next(first, mesh), mesh), mesh) &&
-          m_number(face(h, mesh)) < m_number(face(first, mesh))))
-        first = h;
-    }
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(any, mesh))
+      if(!CGAL::is_border(h, mesh)) {
+        ++corner_count;
+        if(after_border(h) || (!after_border(first) && m_number(face(h, mesh)) < m_number(face(first, mesh))))
+          first = h;
+      }
     // the corners in Far's order: across the edge into the vertex
     std::vector<halfedge_descriptor>& corners = m_walk;
     corners.assign(1, first);
@@ -356,7 +357,6 @@ private:
   std::vector<halfedge_descriptor> m_corner_of;       // by cut vertex
   std::vector<std::size_t> m_vertex_of;               // by cut vertex
   std::vector<int> m_values_at;                       // by old vertex ordinal
-  std::vector<bool> m_disjoint;                       // by cut vertex: the first of several equal
   std::vector<std::size_t> m_first_equal;             // by cut vertex
   std::vector<std::size_t> m_value_starts;            // by old vertex ordinal, into m_values_of_vertex
   std::vector<std::size_t> m_values_of_vertex;        // cut vertices, grouped by old vertex
