@@ -469,14 +469,20 @@ private:
   {
     return [map](const internal::Face_varying_topology<Mesh>& topology) {
       using Value = typename boost::property_traits<CornerMap>::value_type;
+      // the old values by cut vertex, read once: the rows read them in the
+      // cut's order, not the corners'
+      const auto& cut = topology.cut();
+      auto old_values = std::make_shared<std::vector<Value>>();
+      old_values->reserve(cut.number_of_vertices());
+      for(const auto v : cut.vertices())
+        old_values->push_back(get(map, topology.corner_of(v)));
       auto values = std::make_shared<std::vector<Value>>();
       // room for a row per vertex, edge and face of the cut mesh: at least as
       // many as the split makes
-      const auto& cut = topology.cut();
       values->reserve(cut.number_of_vertices() + cut.number_of_edges() + cut.number_of_faces());
-      const auto add_row = [map, values, &topology](const internal::Face_varying_row<FT>& row) {
-        const auto value_of = [&](typename internal::Face_varying_cut_mesh::Vertex_index v) -> Value {
-          return get(map, topology.corner_of(v));
+      const auto add_row = [old_values, values](const internal::Face_varying_row<FT>& row) {
+        const auto value_of = [&](typename internal::Face_varying_cut_mesh::Vertex_index v) -> const Value& {
+          return (*old_values)[v.idx()];
         };
         values->push_back(internal::combine_values<Value>(value_of, row));
       };

@@ -77,26 +77,41 @@ using Face_varying_row_visitor = std::function<void(const Face_varying_row<FT>&)
 template <class Mesh, class FT>
 struct Face_varying_rows
 {
-  /// where the value of a new corner comes from: the element of old face
-  /// `face` (ordinal) that made the corner's vertex
+  /// the row of the new vertex of an old element (ordinal) of a face
   struct Entry
   {
-    Origin_kind kind;
-    std::size_t element;
-    std::size_t row;
+    std::uint32_t element;
+    std::uint32_t row;
   };
+  /// the entries of old face `face` (ordinal) are [face_starts[face],
+  /// face_starts[face + 1]): one for the vertex of each of its n corners,
+  /// then one for the edge of each corner, then one for the face if the
+  /// split makes a face point (so a face with n corners has 2n or 2n + 1)
   std::vector<std::size_t> face_starts{0};
   std::vector<Entry> entries;
 
   /// the row of the new vertex that `origin` (of the old mesh) makes in old face `face`
   std::size_t row_of(std::size_t face, const Vertex_origin& origin) const
   {
-    for(std::size_t k = face_starts[face]; k < face_starts[face + 1]; ++k)
-      if(entries[k].kind == origin.kind && entries[k].element == origin.index)
-        return entries[k].row;
-    refuse(Message() << "Carried_data: a new corner has no face-varying value (an internal error: please report it)");
-    return 0;
+    const Entry* first = entries.data() + face_starts[face];
+    const std::size_t size = face_starts[face + 1] - face_starts[face], corners = size / 2;
+    const auto find = [&](const Entry* from, const Entry* to) {
+      for(const Entry* e = from; e != to; ++e)
+        if(e->element == origin.index)
+          return std::size_t(e->row);
+      return no_row();
+    };
+    const std::size_t row = origin.kind == Origin_kind::vertex ? find(first, first + corners)
+                            : origin.kind == Origin_kind::edge ? find(first + corners, first + 2 * corners)
+                            : size % 2 == 1                    ? std::size_t(first[size - 1].row)
+                                                               : no_row();
+    if(row == no_row())
+      refuse(Message() << "Carried_data: a new corner has no face-varying value (an internal error: please report it)");
+    return row;
   }
+
+private:
+  static constexpr std::size_t no_row() { return static_cast<std::size_t>(-1); }
 };
 
 /*
@@ -211,7 +226,6 @@ private:
           m_corner_of.push_back(h);
           m_vertex_of.push_back(m_number(target(h, mesh)));
           ++m_values_at[m_vertex_of.back()];
-          m_cut.add_vertex();
         }
         m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
       }
@@ -319,35 +333,81 @@ private:
     return true;
   }
 
+  // whether the faces of corner h and of its opposite o have the same
+  // values at both ends of their edge: the edge is not a seam
+  bool same_values_across(halfedge_descriptor h, halfedge_descriptor o) const
+  {
+    const Mesh& mesh = *m_mesh;
+    return value_at(h) == value_at(prev(o, mesh)) && value_at(prev(h, mesh)) == value_at(o);
+  }
+
+  /*
+   * The cut mesh, wired directly (Euler::add_face searches every edge, and a
+   * level has millions): face k of the cut is the face of ordinal k, the cut
+   * halfedge of corner h runs from the value at prev(h) to the value at h,
+   * an edge whose faces have the same values at both ends is one cut edge and
+   * a seam is two, each with a border halfedge.
+   */
   void make_cut_mesh()
   {
     const Mesh& mesh = *m_mesh;
-    // room for the edges of the mesh and as many seams again
-    m_cut.reserve(m_cut.number_of_vertices(), 2 * num_edges(mesh), num_faces(mesh));
-    m_cut_halfedge.assign(m_parent.size(), Cut::Halfedge_index());
-    std::vector<typename Cut::Vertex_index> corners;
-    for(auto f : faces(mesh)) {
-      corners.clear();
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-        corners.push_back(value_at(h));
-      const typename Cut::Face_index cut_face = m_cut.add_face(corners);
-      if(cut_face == Cut::null_face())
-        refuse(Message() << "Carried_data: the corner values around vertex "
-                         << m_number(target(halfedge(f, mesh), mesh)) << " of face " << m_number(f)
-                         << " do not make a manifold face-varying topology");
-      // the cut face's halfedges, in the order of the old face's
-      typename Cut::Halfedge_index c = m_cut.halfedge(cut_face);
-      while(m_cut.target(c) != corners.front())
-        c = m_cut.next(c);
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-        m_cut_halfedge[m_number(h)] = c;
-        c = m_cut.next(c);
-      }
+    using Cut_halfedge = typename Cut::Halfedge_index;
+    std::size_t cut_edges = 0;
+    for(auto e : edges(mesh)) {
+      const halfedge_descriptor h = halfedge(e, mesh), o = opposite(h, mesh);
+      cut_edges += CGAL::is_border(h, mesh) || CGAL::is_border(o, mesh) || same_values_across(h, o) ? 1 : 2;
     }
-    m_edge_of.assign(m_cut.number_of_edges(), 0);
-    for(auto f : faces(mesh))
+    m_cut.resize(static_cast<typename Cut::size_type>(m_corner_of.size()),
+                 static_cast<typename Cut::size_type>(cut_edges),
+                 static_cast<typename Cut::size_type>(num_faces(mesh)));
+    m_cut_halfedge.assign(m_parent.size(), Cut_halfedge());
+    m_edge_of.assign(cut_edges, 0);
+    std::size_t next_edge = 0;
+    for(auto f : faces(mesh)) {
+      const typename Cut::Face_index cut_face(static_cast<typename Cut::size_type>(m_number(f)));
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const halfedge_descriptor o = opposite(h, mesh);
+        Cut_halfedge c;
+        if(!CGAL::is_border(o, mesh) && m_cut_halfedge[m_number(o)].is_valid() && same_values_across(h, o))
+          c = m_cut.opposite(m_cut_halfedge[m_number(o)]);
+        else {
+          m_edge_of[next_edge] = m_number(h) >> 1;
+          c = Cut_halfedge(static_cast<typename Cut::size_type>(2 * next_edge++));
+          m_cut.set_target(m_cut.opposite(c), value_at(prev(h, mesh)));
+        }
+        m_cut.set_target(c, value_at(h));
+        m_cut.set_face(c, cut_face);
+        m_cut.set_halfedge(value_at(h), c);
+        m_cut_halfedge[m_number(h)] = c;
+      }
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-        m_edge_of[m_cut.edge(cut_halfedge(h))] = m_number(h) >> 1;
+        m_cut.set_next(cut_halfedge(h), cut_halfedge(next(h, mesh)));
+      m_cut.set_halfedge(cut_face, cut_halfedge(halfedge(f, mesh)));
+    }
+    wire_cut_borders();
+  }
+
+  // the border halfedges of the cut: the next of border halfedge b (into
+  // vertex s) is the border halfedge out of s, found by turning around s
+  // from b's opposite through the faces; a border vertex keeps a border
+  // halfedge, as Surface_mesh expects
+  void wire_cut_borders()
+  {
+    using Cut_halfedge = typename Cut::Halfedge_index;
+    const std::size_t turns = m_parent.size(); // more would be a loop: not a manifold fan
+    for(const Cut_halfedge b : m_cut.halfedges()) {
+      if(!m_cut.is_border(b))
+        continue;
+      Cut_halfedge out = m_cut.opposite(b);
+      for(std::size_t turn = 0; !m_cut.is_border(out); ++turn) {
+        if(turn == turns)
+          refuse(Message() << "Carried_data: the corner values around vertex " << m_vertex_of[m_cut.target(b)]
+                           << " do not make a manifold face-varying topology");
+        out = m_cut.opposite(m_cut.prev(out));
+      }
+      m_cut.set_next(b, out);
+      m_cut.set_halfedge(m_cut.target(b), b);
+    }
   }
 
   const Mesh* m_mesh;
@@ -480,18 +540,24 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
   }
   const Mesh_numbering<Cut> cut_number(cut);
   using Entry = typename Face_varying_rows<Mesh, FT>::Entry;
+  // (a Surface_mesh numbers its elements in 32 bits: so do the entries)
+  const auto entry = [](std::size_t element, std::size_t row) {
+    return Entry{static_cast<std::uint32_t>(element), static_cast<std::uint32_t>(row)};
+  };
+  // two entries a corner, one a face: room for all of them at once
+  result.entries.reserve(2 * cut.number_of_halfedges() + cut.number_of_faces());
+  result.face_starts.reserve(cut.number_of_faces() + 1);
   for(auto f : faces(mesh)) {
     const std::size_t face = number(f);
-    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-      // equal values in sectors that seams separate are one value (kept
-      // where it is), as in OpenSubdiv: one row, so one index
+    // equal values in sectors that seams separate are one value (kept where
+    // it is), as in OpenSubdiv: one row, so one index
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
       result.entries.push_back(
-        Entry{Origin_kind::vertex, number(target(h, mesh)), row_of_vertex[topology.first_equal(topology.value_at(h))]});
-      result.entries.push_back(
-        Entry{Origin_kind::edge, number(h) >> 1, row_of_edge[cut_number(cut.edge(topology.cut_halfedge(h)))]});
-    }
+        entry(number(target(h, mesh)), row_of_vertex[topology.first_equal(topology.value_at(h))]));
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      result.entries.push_back(entry(number(h) >> 1, row_of_edge[cut_number(cut.edge(topology.cut_halfedge(h)))]));
     if(row_of_face[face] != none)
-      result.entries.push_back(Entry{Origin_kind::face, face, row_of_face[face]});
+      result.entries.push_back(entry(face, row_of_face[face]));
     result.face_starts.push_back(result.entries.size());
   }
   return result;
