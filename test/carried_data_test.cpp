@@ -21,8 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -852,4 +854,181 @@ TEST(CarriedData, values_around_a_vertex_are_told_apart_as_on_opensubdivs_base_l
       EXPECT_EQ(singles[1], b_in_face_3);
     }
   }
+}
+
+namespace {
+
+/*
+ * `base` with a UV channel: a seam around faces 0 and 1 (their corners have
+ * values of their own), the values numbered densely in "h:index" and held in
+ * "h:uv", a semi-sharp edge (sharpness 1.5) inside the first chart in
+ * "e:sharpness" if `tagged` (0 everywhere else).
+ */
+template <class Mesh_>
+Mesh_ seamed_channel(const Mesh_& base, bool tagged)
+{
+  using H = typename Mesh_::Halfedge_index;
+  using Point_2 = typename CGAL::Kernel_traits<typename Mesh_::Point>::Kernel::Point_2;
+  Mesh_ mesh = base;
+  auto uv = mesh.template add_property_map<H, Point_2>("h:uv").first;
+  auto index = mesh.template add_property_map<H, int>("h:index").first;
+  auto sharpness = mesh.template add_property_map<typename Mesh_::Edge_index, double>("e:sharpness", 0.).first;
+  std::map<std::pair<std::size_t, bool>, int> value_of; // (vertex, second chart)
+  for(auto f : faces(mesh))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const bool second_chart = f.idx() < 2;
+      const auto& p = mesh.point(target(h, mesh));
+      const auto inserted = value_of.emplace(std::make_pair(target(h, mesh).idx(), second_chart), int(value_of.size()));
+      index[h] = inserted.first->second;
+      uv[h] = Point_2(p.x() / 4 + (second_chart ? 5 : 0), p.y() - p.z() / 8);
+    }
+  // the edge, off the seam, between the first two faces of the first chart
+  for(auto e : edges(mesh))
+    if(tagged && !is_border(e, mesh) && face(halfedge(e, mesh), mesh).idx() >= 2 &&
+       face(opposite(halfedge(e, mesh), mesh), mesh).idx() >= 2) {
+      sharpness[e] = 1.5;
+      break;
+    }
+  return mesh;
+}
+
+/*
+ * The table of `levels` levels of the seamed channel of `base`, applied to
+ * its base values, gives every corner of the refined mesh (the same mesh as
+ * `subdivide()` makes, corner for corner) the value that `subdivide()`
+ * carries with the same index map, exactly (==), through the index that
+ * `subdivide()` writes; one source per base value, one stencil per refined
+ * value.
+ */
+template <class Mesh_, class Mask>
+void expect_table_gives_carried_values(const Mesh_& base, const Mask& mask, S::Face_varying_interpolation mode,
+                                       int levels, bool tagged)
+{
+  using H = typename Mesh_::Halfedge_index;
+  using E = typename Mesh_::Edge_index;
+  using Point_2 = typename CGAL::Kernel_traits<typename Mesh_::Point>::Kernel::Point_2;
+  using FT = typename Mask::Number_type;
+  const Mesh_ coarse = seamed_channel(base, tagged);
+  const auto params = [&](const Mesh_& m) {
+    return S::parameters::number_of_iterations(levels).edge_sharpness_map(
+      m.template property_map<E, double>("e:sharpness").first);
+  };
+  Mesh_ carried = coarse;
+  auto uv = carried.template property_map<H, Point_2>("h:uv").first;
+  auto index = carried.template property_map<H, int>("h:index").first;
+  S::Carried_data<Mesh_, FT> data;
+  data.corner_map(uv, mode, index);
+  S::subdivide(carried, mask, params(carried).carried_data(data));
+
+  const auto coarse_index = coarse.template property_map<H, int>("h:index").first;
+  const auto coarse_uv = coarse.template property_map<H, Point_2>("h:uv").first;
+  std::vector<Point_2> values(coarse.number_of_vertices() + 16);
+  std::set<int> base_values;
+  for(auto h : halfedges(coarse))
+    if(!is_border(h, coarse)) {
+      values[std::size_t(coarse_index[h])] = coarse_uv[h];
+      base_values.insert(coarse_index[h]);
+    }
+  values.resize(base_values.size());
+  Mesh_ refined;
+  std::vector<std::size_t> refined_index;
+  const auto table = S::make_face_varying_stencil_table(
+    coarse, mask, coarse_index, mode, params(coarse).refined_mesh(refined).refined_corner_indices(refined_index));
+  EXPECT_EQ(table.number_of_sources(), base_values.size());
+  std::vector<Point_2> refined_values;
+  table.apply(values, refined_values);
+
+  ASSERT_EQ(num_halfedges(refined), num_halfedges(carried));
+  ASSERT_EQ(refined_index.size(), num_halfedges(carried));
+  for(auto v : vertices(carried))
+    EXPECT_EQ(refined.point(v), carried.point(v)) << v;
+  std::set<std::size_t> refined_values_used;
+  std::size_t seam_corners = 0; // corners whose index differs from the next corner's around their vertex
+  for(auto h : halfedges(carried)) {
+    if(is_border(h, carried))
+      continue;
+    ASSERT_EQ(refined_index[h.idx()], std::size_t(index[h])) << h;
+    EXPECT_EQ(refined_values[refined_index[h.idx()]], uv[h]) << h;
+    refined_values_used.insert(refined_index[h.idx()]);
+    const H across = opposite(next(h, carried), carried);
+    seam_corners += !is_border(across, carried) && index[across] != index[h] ? 1 : 0;
+  }
+  EXPECT_EQ(table.number_of_stencils(), refined_values_used.size());
+  EXPECT_GT(seam_corners, 0u);
+}
+
+const S::Face_varying_interpolation face_varying_modes[] = {S::Face_varying_interpolation::none,
+                                                            S::Face_varying_interpolation::corners_plus1,
+                                                            S::Face_varying_interpolation::all};
+
+} // namespace
+
+TEST(FaceVaryingStencilTable, catmull_clark_table_gives_the_carried_values_exactly)
+{
+  for(const S::Face_varying_interpolation mode : face_varying_modes) {
+    SCOPED_TRACE(int(mode));
+    expect_table_gives_carried_values(testing_utils::mixed_box<Exact_mesh>(), S::Catmull_clark_mask<Exact_mesh>(), mode,
+                                      2, false);
+    expect_table_gives_carried_values(testing_utils::mixed_box<Exact_mesh>(), S::Catmull_clark_mask<Exact_mesh>(), mode,
+                                      2, true);
+  }
+}
+
+TEST(FaceVaryingStencilTable, loop_table_gives_the_carried_values_exactly)
+{
+  for(const S::Face_varying_interpolation mode : face_varying_modes) {
+    SCOPED_TRACE(int(mode));
+    expect_table_gives_carried_values(testing_utils::open_fan<Exact_mesh>(5), S::Loop_mask<Exact_mesh>(), mode, 2,
+                                      false);
+    expect_table_gives_carried_values(testing_utils::open_fan<Exact_mesh>(5), S::Loop_mask<Exact_mesh>(), mode, 2,
+                                      true);
+  }
+}
+
+// in double, a level's values are those of subdivide() bit for bit (the same
+// weights, summed in the same order)
+TEST(FaceVaryingStencilTable, a_semi_sharp_level_in_double_gives_the_carried_values_bit_for_bit)
+{
+  for(const S::Face_varying_interpolation mode : face_varying_modes) {
+    SCOPED_TRACE(int(mode));
+    expect_table_gives_carried_values(testing_utils::mixed_box<Mesh>(), S::Catmull_clark_mask<Mesh>(), mode, 1, true);
+    expect_table_gives_carried_values(testing_utils::bipyramid<Mesh>(5), S::Loop_mask<Mesh>(), mode, 1, true);
+  }
+}
+
+TEST(FaceVaryingStencilTable, refuses_bad_corner_indices_and_schemes_without_corner_maps)
+{
+  using H = Exact_mesh::Halfedge_index;
+  Exact_mesh mesh = seamed_channel(testing_utils::mixed_box<Exact_mesh>(), false);
+  auto index = mesh.property_map<H, int>("h:index").first;
+  const auto message_of = [&](const auto& mask) {
+    try {
+      S::make_face_varying_stencil_table(mesh, mask, index, S::Face_varying_interpolation::corners_plus1);
+    } catch(const S::Bad_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no Bad_input");
+  };
+  const H corner = halfedge(*faces(mesh).begin(), mesh);
+  index[corner] = -1;
+  EXPECT_NE(message_of(S::Catmull_clark_mask<Exact_mesh>()).find("has the value index -1"), std::string::npos)
+    << message_of(S::Catmull_clark_mask<Exact_mesh>());
+  auto wide = mesh.add_property_map<H, long long>("h:wide", 0).first;
+  for(auto h : halfedges(mesh))
+    wide[h] = index[h] < 0 ? 0 : index[h];
+  wide[corner] = (1ll << 32) + 3;
+  EXPECT_THROW(
+    {
+      try {
+        S::make_face_varying_stencil_table(mesh, S::Catmull_clark_mask<Exact_mesh>(), wide,
+                                           S::Face_varying_interpolation::none);
+      } catch(const S::Bad_input& e) {
+        EXPECT_NE(std::string(e.what()).find("less than 2^32 - 1"), std::string::npos) << e.what();
+        throw;
+      }
+    },
+    S::Bad_input);
+  index[corner] = 0;
+  EXPECT_NE(message_of(S::Doo_sabin_mask<Exact_mesh>()).find("need a scheme that splits edges"), std::string::npos)
+    << message_of(S::Doo_sabin_mask<Exact_mesh>());
 }

@@ -26,6 +26,7 @@
 #include <CGAL/Subdiv/surface_subdivision.h>
 
 #include <CGAL/Subdiv/stencils/Stencil_table.h>
+#include <CGAL/Subdiv/stencils/make_face_varying_stencil_table.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 
 #endif // CGAL_SUBDIV_H

@@ -172,11 +172,7 @@ public:
   Carried_data& corner_maps(Face_varying_interpolation interpolation, IndexMap indices, CornerMaps... maps)
   {
     static_assert(sizeof...(CornerMaps) > 0, "corner_maps: give at least one corner map");
-    const auto same = [indices](halfedge_descriptor a, halfedge_descriptor b) {
-      return get(indices, a) == get(indices, b);
-    };
-    m_corner_channels.push_back(
-      Corner_channel{interpolation, same, {index_map_level(indices), value_map_level(maps)...}});
+    add_indexed_channel(interpolation, indices, {value_map_level(maps)...});
     return *this;
   }
 
@@ -226,6 +222,7 @@ public:
 
 private:
   struct Corner_channel; // corner maps that share one face-varying topology
+  friend struct internal::Carried_data_access;
 
 public:
   /*
@@ -488,6 +485,29 @@ private:
       };
       const auto write = [map, values](halfedge_descriptor h, std::size_t row) { put(map, h, (*values)[row]); };
       return Corner_map_level{add_row, write};
+    };
+  }
+
+  // a channel of value indices (`corner_maps`) whose rows also go to `maps`
+  template <class IndexMap>
+  void add_indexed_channel(Face_varying_interpolation interpolation, IndexMap indices,
+                           std::vector<Corner_map_start> maps)
+  {
+    const auto same = [indices](halfedge_descriptor a, halfedge_descriptor b) {
+      return get(indices, a) == get(indices, b);
+    };
+    maps.insert(maps.begin(), index_map_level(indices));
+    m_corner_channels.push_back(Corner_channel{interpolation, same, std::move(maps)});
+  }
+
+  // rows only, for `internal::Carried_data_access`: `rows_of_level(topology)`
+  // makes the visitor of the rows of the level of `topology`; nothing is
+  // written (the channel's index map numbers the new values)
+  template <class LevelRows>
+  static Corner_map_start row_map_level(LevelRows rows_of_level)
+  {
+    return [rows_of_level](const internal::Face_varying_topology<Mesh>& topology) {
+      return Corner_map_level{rows_of_level(topology), [](halfedge_descriptor, std::size_t) {}};
     };
   }
 

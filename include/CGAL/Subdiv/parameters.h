@@ -36,6 +36,8 @@ struct flatness_tolerance_t
 {};
 struct refined_mesh_t
 {};
+struct refined_corner_indices_t
+{};
 struct characteristic_map_t
 {};
 struct verify_limit_t
@@ -148,7 +150,9 @@ using CGAL::parameters::is_default_parameter;
  * Kept by reference (the chain holds a pointer to the argument):
  *  - carried_data: other vertex and face data to carry through the levels
  *    (`Carried_data`);
- *  - refined_mesh: where `make_stencil_table()` puts the refined mesh.
+ *  - refined_mesh: where `make_stencil_table()` puts the refined mesh;
+ *  - refined_corner_indices: where `make_face_varying_stencil_table()` puts
+ *    the value index of every corner of the refined mesh.
  */
 #define CGAL_SUBDIV_FOR_EACH_VALUE_PARAMETER(X)                      \
   X(number_of_iterations, CGAL::internal_np::number_of_iterations_t) \
@@ -177,7 +181,8 @@ using CGAL::parameters::is_default_parameter;
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \
-  X(refined_mesh, internal::refined_mesh_t, )
+  X(refined_mesh, internal::refined_mesh_t, )       \
+  X(refined_corner_indices, internal::refined_corner_indices_t, )
 
 /*!
  * \ingroup PkgSubdivFunctions

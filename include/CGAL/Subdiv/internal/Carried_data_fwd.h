@@ -16,6 +16,14 @@ namespace Subdiv {
 template <class Mesh, class FT = internal::Mesh_FT<Mesh>>
 class Carried_data;
 
+namespace internal {
+
+/// what the package's own functions reach of `Carried_data` beside its
+/// public API (`make_face_varying_stencil_table()`'s channel of rows)
+struct Carried_data_access;
+
+} // namespace internal
+
 } // namespace Subdiv
 } // namespace CGAL
 

@@ -157,6 +157,42 @@ struct Compose_scratch
 };
 
 /*
+ * A row of terms (v, w) over the old vertices of a level (each v once), times
+ * the rows v of `coarse` (the table of the levels before; null for the first
+ * level: the terms themselves), written at open(most) as `compose_row` says.
+ * Returns the number of terms.
+ */
+template <class FT, class Terms, class Open>
+std::size_t compose_terms(const Terms& terms, const Stencil_table<FT>* coarse, std::size_t sources,
+                          Row_builder<FT>& builder, const Open& open)
+{
+  if(coarse == nullptr) {
+    const auto out = open(terms.size());
+    for(std::size_t k = 0; k < terms.size(); ++k) {
+      out.first[k] = terms[k].first;
+      out.second[k] = terms[k].second;
+    }
+    return terms.size();
+  }
+  if(terms.empty())
+    return 0;
+  const std::size_t most = coarse->terms_under(terms);
+  const auto out = open(most);
+  builder.start(sources, most, out.first);
+  const std::uint32_t* from = coarse->source_data();
+  const FT* from_weights = coarse->weight_data();
+  for(std::size_t k = 0; k < terms.size(); ++k) {
+    const std::size_t v = terms[k].first;
+    if(k == 0) // the first row brings only new sources
+      builder.add_first_row(from, from_weights, coarse->stencil_begin(v), coarse->stencil_end(v), terms[k].second);
+    else
+      builder.add_row(from, from_weights, coarse->stencil_begin(v), coarse->stencil_end(v), terms[k].second);
+  }
+  builder.write_weights(out.second);
+  return builder.size();
+}
+
+/*
  * Row j of a level composed with the table of the levels before (`coarse`,
  * from the coarse vertices to the old vertices of this level; null for the
  * first level): the mask's terms (v, w) of new vertex j, merged by old
@@ -172,32 +208,7 @@ std::size_t compose_row(std::size_t j, const Host& host, const Mask& mask, const
   scratch.report.clear();
   Numbered_report<Numbering, Stencil<std::uint32_t, FT>> acc{number, scratch.report};
   host.report(j, mask, acc);
-  const auto& terms = scratch.report.terms();
-  if(coarse == nullptr) {
-    const auto out = open(terms.size());
-    for(std::size_t k = 0; k < terms.size(); ++k) {
-      out.first[k] = terms[k].first;
-      out.second[k] = terms[k].second;
-    }
-    return terms.size();
-  }
-  if(terms.empty())
-    return 0;
-  const std::size_t most = coarse->terms_under(terms);
-  const auto out = open(most);
-  Row_builder<FT>& builder = scratch.builder;
-  builder.start(sources, most, out.first);
-  const std::uint32_t* from = coarse->source_data();
-  const FT* from_weights = coarse->weight_data();
-  for(std::size_t k = 0; k < terms.size(); ++k) {
-    const std::size_t v = terms[k].first;
-    if(k == 0) // the first row brings only new sources
-      builder.add_first_row(from, from_weights, coarse->stencil_begin(v), coarse->stencil_end(v), terms[k].second);
-    else
-      builder.add_row(from, from_weights, coarse->stencil_begin(v), coarse->stencil_end(v), terms[k].second);
-  }
-  builder.write_weights(out.second);
-  return builder.size();
+  return compose_terms(scratch.report.terms(), coarse, sources, scratch.builder, open);
 }
 
 /*

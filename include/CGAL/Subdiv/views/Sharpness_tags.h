@@ -259,6 +259,10 @@ public:
   /// the tags of the copy's current level
   Sharpness_tags<Mesh, FT, Edge_map, Vertex_map> tags() const { return {m_edges, m_vertices, m_method}; }
 
+  /// the maps of the copy's tags, for `subdivide()` to refine
+  const Edge_map& edge_map() const { return m_edges; }
+  const Vertex_map& vertex_map() const { return m_vertices; }
+
   /// the copy's current tags, by ordinal
   Sharpness_by_ordinal<FT> by_ordinal() const
   {
