@@ -113,6 +113,7 @@ std::vector<std::vector<std::size_t>> polygons_of(const Tagged_shape& shape)
 
 using Uv_map = Mesh::Property_map<Mesh::Halfedge_index, Kernel::Point_2>;
 using Uv_index_map = Mesh::Property_map<Mesh::Halfedge_index, std::size_t>;
+using Point_of_map = Mesh::Property_map<Mesh::Vertex_index, std::size_t>;
 
 /// the shape's texture coordinates (if every face has some) in the corner map
 /// "h:uv", face f of the mesh being the soup's face f and `origin` giving the
@@ -189,7 +190,22 @@ Mesh tagged_mesh(const Tagged_shape& shape, bool split = false)
   for(int f : shape.holes)
     put(holes, Mesh::Face_index(static_cast<Mesh::size_type>(f)), true);
   add_uv_map(mesh, shape, origin);
+  Point_of_map point_of = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:point", 0).first;
+  for(auto v : mesh.vertices())
+    point_of[v] = origin[v];
   return mesh;
+}
+
+/// the UVs of `mesh` (made by `tagged_mesh`) as a corner map in `mode`, the
+/// topology of the vt indices (as Far's); the copies of a split vertex are
+/// one non-manifold vertex (as Far's)
+Sd::Carried_data<Mesh, double> uv_data(const Mesh& mesh, Sd::Face_varying_interpolation mode)
+{
+  Sd::Carried_data<Mesh, double> data;
+  data.corner_map(mesh.property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first, mode,
+                  mesh.property_map<Mesh::Halfedge_index, std::size_t>("h:uv_index").first);
+  data.non_manifold_copies(mesh.property_map<Mesh::Vertex_index, std::size_t>("v:point").first);
+  return data;
 }
 
 Sd::Boundary_interpolation boundary_of(const Tagged_shape& shape)
@@ -730,23 +746,12 @@ std::vector<Corner_value> corner_values(const Mesh& mesh, const Uv_map& uv)
   return result;
 }
 
-/// the (shape, mode) pairs (mode: `Face_varying_interpolation` as an int)
-/// where this package's face-varying values differ from Far's, 4 of 642
-/// (doc/provenance.md, "Face-varying data"): the non-manifold fan, whose
-/// vertices on the non-manifold edges Far makes corners of every value, and
-/// which is split into a manifold mesh here before its values are carried.
-/// The test checks that they still differ, so that fixing one shows here.
-bool is_known_face_varying_difference(const std::string& shape, Sd::Face_varying_interpolation mode)
-{
-  static const std::set<std::pair<std::string, int>> known = {
-    {"catmark_fan", 0}, {"catmark_fan", 1}, {"catmark_fan", 2}, {"catmark_fan", 3}};
-  return known.count({shape, static_cast<int>(mode)}) > 0;
-}
-
 // the UVs of every shape that has some (109 of the 122; 107 that a halfedge
 // mesh holds), after 1 to 3 levels, in every mode, as Far's
 // InterpolateFaceVarying from the same tags: every corner of each side has a
-// corner of the other at the same vertex with the same UV, to within 1e-12
+// corner of the other at the same vertex with the same UV, to within 1e-12.
+// The non-manifold shapes are split (split_non_manifold), the copies of a
+// vertex being one non-manifold vertex for the UVs (non_manifold_copies)
 TEST_P(OpenSubdivShapes, face_varying_values_as_opensubdiv_far)
 {
   const Conformance_case& c = GetParam();
@@ -758,13 +763,11 @@ TEST_P(OpenSubdivShapes, face_varying_values_as_opensubdiv_far)
     const auto reference = opensubdiv_corner_values(shape, c.scheme, 3, far_mode);
     Mesh mesh = tagged_mesh(shape, is_non_manifold_shape(c.shape));
     const Uv_map uv = mesh.property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first;
-    const Uv_index_map uv_index = mesh.property_map<Mesh::Halfedge_index, std::size_t>("h:uv_index").first;
     for(auto v : mesh.vertices()) // Far keeps them, with no corner: they are no business of the UVs
       if(mesh.is_isolated(v))
         mesh.remove_vertex(v);
     mesh.collect_garbage();
-    Sd::Carried_data<Mesh, double> data;
-    data.corner_map(uv, mode, uv_index); // the topology of the vt indices, as Far's
+    const Sd::Carried_data<Mesh, double> data = uv_data(mesh, mode);
     double worst = 0;
     for(int level = 1; level <= 3; ++level) {
       refine_once(mesh, c.scheme, shape, data);
@@ -775,24 +778,25 @@ TEST_P(OpenSubdivShapes, face_varying_values_as_opensubdiv_far)
     }
     if(getenv("FVAR_LIST") && worst >= 1e-12)
       std::cout << "{\"" << c.shape << "\", " << static_cast<int>(mode) << "}," << std::endl;
-    if(is_known_face_varying_difference(c.shape, mode))
-      EXPECT_GE(worst, 1e-12) << "agrees now: remove it from the known differences";
-    else
-      EXPECT_LT(worst, 1e-12);
+    EXPECT_LT(worst, 1e-12);
   }
 }
 
 /// the (shape, mode) pairs where the face-varying limit after 2 levels
-/// differs from Far's LimitFaceVarying besides the known differences of the
-/// values (`is_known_face_varying_difference`): the bilinear cube in the
-/// modes with seams that are not linear, where Far gives a value on a seam the
-/// crease limit (1/6, 2/3, 1/6) whatever the scheme, and the limit of the
-/// bilinear scheme is every value itself. The test checks that they still
-/// differ
+/// differs from Far's LimitFaceVarying:
+///  - the bilinear cube in the modes with seams that are not linear, where Far
+///    gives a value on a seam the crease limit (1/6, 2/3, 1/6) whatever the
+///    scheme, and the limit of the bilinear scheme is every value itself;
+///  - the non-manifold fan in the modes that do not keep every seam: Far keeps
+///    every value of a non-manifold vertex (a corner) in the limit too, while
+///    `face_varying_limit` is given the split mesh of level 2 alone, and does
+///    not know which of its vertices descend from one non-manifold vertex.
+/// The test checks that they still differ
 bool is_known_face_varying_limit_difference(const std::string& shape, Sd::Face_varying_interpolation mode)
 {
   static const std::set<std::pair<std::string, int>> known = {
-    {"bilinear_cube", 0}, {"bilinear_cube", 1}, {"bilinear_cube", 2}};
+    {"bilinear_cube", 0}, {"bilinear_cube", 1}, {"bilinear_cube", 2}, {"catmark_fan", 0},
+    {"catmark_fan", 1},   {"catmark_fan", 2},   {"catmark_fan", 3}};
   return known.count({shape, static_cast<int>(mode)}) > 0;
 }
 
@@ -819,11 +823,9 @@ std::pair<std::vector<Corner_value>, std::vector<Corner_value>> split_at_valence
 // weights on a seam are floats: 1.0f / 6.0f, 2.0f / 3.0f). At an interior
 // vertex of valence 2, Far leaves the values where they are, as its limit
 // leaves the points (expect_limit_as_far): there Far's limit is our value
-// (checked but on the back-to-back shapes). The
-// shapes whose values after 1 to 3 levels differ are left out in those modes;
-// so are the Loop shapes with an interior vertex of valence 2 (Loop's analysis
-// starts at valence 3: the limit refuses them, as refine_as_opensubdiv_far_does
-// checks)
+// (checked but on the back-to-back shapes). The Loop shapes with an
+// interior vertex of valence 2 are left out (Loop's analysis starts at
+// valence 3: the limit refuses them, as refine_as_opensubdiv_far_does checks)
 TEST_P(OpenSubdivShapes, face_varying_limit_as_opensubdiv_far)
 {
   const Conformance_case& c = GetParam();
@@ -831,8 +833,6 @@ TEST_P(OpenSubdivShapes, face_varying_limit_as_opensubdiv_far)
   if(shape.soup.texture_indices.empty() || is_unsplittable_shape(c.shape) || has_triangle_valence_2_vertex(c.shape))
     return;
   for(const auto& [mode, far_mode] : fvar_modes) {
-    if(is_known_face_varying_difference(c.shape, mode))
-      continue;
     SCOPED_TRACE("mode " + std::to_string(static_cast<int>(mode)));
     const auto reference = opensubdiv_corner_values(shape, c.scheme, 2, far_mode, true);
     Mesh mesh = tagged_mesh(shape, is_non_manifold_shape(c.shape));
@@ -842,8 +842,7 @@ TEST_P(OpenSubdivShapes, face_varying_limit_as_opensubdiv_far)
       if(mesh.is_isolated(v))
         mesh.remove_vertex(v);
     mesh.collect_garbage();
-    Sd::Carried_data<Mesh, double> data;
-    data.corner_map(uv, mode, uv_index);
+    const Sd::Carried_data<Mesh, double> data = uv_data(mesh, mode);
     for(int level = 1; level <= 2; ++level)
       refine_once(mesh, c.scheme, shape, data);
     const Uv_map limit = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:limit_uv").first;

@@ -90,6 +90,15 @@ enum class Interpolation {
  *   share one index map, as the maps of one OpenSubdiv face-varying channel
  *   (UVs and tangents, say): the face-varying topology and the rows of a
  *   level are made once for all of them. Each map ends as it would alone.
+ * - `non_manifold_copies(map)`: a readable vertex property map giving every
+ *   vertex the point of the polygon soup it copies (what
+ *   `Non_manifold_split::origin` gives by vertex, for a mesh made by
+ *   `split_non_manifold()`). The copies of one point are one non-manifold
+ *   vertex for the corner maps, as for OpenSubdiv: when the corners of all its
+ *   copies do not hold one value, every value at every copy is kept where it
+ *   is (a corner), and so are the values of their children on the next levels
+ *   (the maps of the mesh of the call are read on the first level a channel
+ *   carries).
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -173,6 +182,13 @@ public:
   {
     static_assert(sizeof...(CornerMaps) > 0, "corner_maps: give at least one corner map");
     add_indexed_channel(interpolation, indices, {value_map_level(maps)...});
+    return *this;
+  }
+
+  template <class VertexMap>
+  Carried_data& non_manifold_copies(VertexMap point_of)
+  {
+    m_point_of = [point_of](vertex_descriptor v) { return static_cast<std::size_t>(get(point_of, v)); };
     return *this;
   }
 
@@ -269,8 +285,10 @@ public:
     {
       if(m_data->wants_provenance())
         write_provenance(internal::new_faces_of<Mesh>(level), level.elements().vertices);
-      if(!m_corner_levels.empty())
+      if(!m_corner_levels.empty()) {
         write_corners(level);
+        pin_children(level.elements().vertices);
+      }
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -288,6 +306,7 @@ public:
     // once, every row going to each of its maps
     struct Corner_level
     {
+      const Corner_channel* channel;
       Face_varying_rows rows;
       std::vector<Corner_writer> writers;
     };
@@ -295,7 +314,9 @@ public:
     template <class Mask>
     Corner_level read_channel(const Corner_channel& channel, const Mask& mask)
     {
-      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same, !channel.refined);
+      if(!channel.refined && m_data->m_point_of)
+        channel.pinned = internal::non_manifold_corners(*m_mesh, m_data->m_point_of, channel.same);
+      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same, !channel.refined, channel.pinned);
       channel.refined = true;
       std::vector<Corner_map_level> maps;
       for(const auto& start : channel.maps)
@@ -306,6 +327,7 @@ public:
             map.add_row(row);
       };
       Corner_level result;
+      result.channel = &channel;
       const auto refine = [&]() {
         if constexpr(has_sharp_level<Mask>::value)
           if(channel.interpolation != Face_varying_interpolation::all)
@@ -337,6 +359,23 @@ public:
             }
           }
         });
+    }
+
+    // the children of the pinned vertices of a channel are pinned (OpenSubdiv's
+    // vertex values inherit their parents' tags)
+    void pin_children(const std::vector<vertex_descriptor>& new_vertices)
+    {
+      for(const Corner_level& corner_level : m_corner_levels) {
+        std::vector<bool>& pinned = corner_level.channel->pinned;
+        if(pinned.empty())
+          continue;
+        const internal::Mesh_numbering<Mesh> number(*m_mesh);
+        std::vector<bool> children(num_vertices(*m_mesh), false);
+        for(std::size_t j = 0; j < new_vertices.size(); ++j)
+          if(m_new_origins[j].kind == Origin_kind::vertex && pinned[m_new_origins[j].index])
+            children[number(new_vertices[j])] = true;
+        pinned = std::move(children);
+      }
     }
 
     template <class Mask>
@@ -457,6 +496,10 @@ private:
     /// whether a level was carried: the values of the first one are told
     /// apart as on OpenSubdiv's base level, and inherited after
     mutable bool refined = false;
+    /// by vertex ordinal of the level being carried, the vertices whose values
+    /// are all kept (copies of a non-manifold vertex, and their children);
+    /// empty if none
+    mutable std::vector<bool> pinned{};
   };
 
   // a map of values: the new value of a row is the combination of the old
@@ -537,6 +580,7 @@ private:
   std::vector<Corner_channel> m_corner_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
+  std::function<std::size_t(vertex_descriptor)> m_point_of; // non_manifold_copies
   mutable Provenance m_provenance;
 };
 

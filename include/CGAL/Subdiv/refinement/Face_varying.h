@@ -134,8 +134,8 @@ public:
   /// tells them apart on its base level (`join_values_as_opensubdiv`); on
   /// the levels it refines, equal values are one value
   Face_varying_topology(const Mesh& mesh, const std::function<bool(halfedge_descriptor, halfedge_descriptor)>& same,
-                        bool base_level = false)
-    : m_mesh(&mesh), m_number(mesh)
+                        bool base_level = false, std::vector<bool> pinned = {})
+    : m_mesh(&mesh), m_number(mesh), m_pinned(std::move(pinned))
   {
     join_corners(same);
     make_values();
@@ -159,6 +159,9 @@ public:
   std::size_t edge_of(typename Cut::Edge_index e) const { return m_edge_of[e]; }
   /// the number of values at the vertex of cut vertex v
   int values_at_vertex(typename Cut::Vertex_index v) const { return m_values_at[m_vertex_of[v]]; }
+  /// whether every value of the vertex of cut vertex v is kept where it is
+  /// (a copy of a non-manifold vertex: `non_manifold_corners`)
+  bool is_pinned(typename Cut::Vertex_index v) const { return !m_pinned.empty() && m_pinned[m_vertex_of[v]]; }
   /// whether the vertex of cut vertex v is on a border of the old mesh
   bool is_on_mesh_border(typename Cut::Vertex_index v) const
   {
@@ -412,6 +415,7 @@ private:
 
   const Mesh* m_mesh;
   Mesh_numbering<Mesh> m_number;
+  std::vector<bool> m_pinned;                         // by old vertex ordinal; empty if none is
   std::vector<std::size_t> m_parent;                  // union-find over the corners, by halfedge ordinal
   std::vector<typename Cut::Vertex_index> m_value_of; // by halfedge ordinal (corners only)
   std::vector<halfedge_descriptor> m_corner_of;       // by cut vertex
@@ -427,6 +431,47 @@ private:
   std::vector<typename Cut::Halfedge_index> m_cut_halfedge; // by halfedge ordinal (corners only)
   Cut m_cut;
 };
+
+/*
+ * The vertices of `mesh` (by ordinal) whose values OpenSubdiv keeps where
+ * they are as the values of a non-manifold vertex: the copies of one point
+ * (`point_of(v)`, two copies or more) whose corners do not all hold one value
+ * (`same`), as `Vtr::internal::FVarLevel::completeTopologyFromFaceValues`
+ * sharpens every value of a non-manifold vertex with mismatched values.
+ * Empty if there is none.
+ */
+template <class Mesh, class PointOf, class Same>
+std::vector<bool> non_manifold_corners(const Mesh& mesh, const PointOf& point_of, const Same& same)
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  const Mesh_numbering<Mesh> number(mesh);
+  std::vector<std::pair<std::size_t, std::size_t>> copies; // (point, vertex ordinal)
+  for(auto v : vertices(mesh))
+    copies.emplace_back(point_of(v), number(v));
+  std::sort(copies.begin(), copies.end());
+  std::vector<bool> pinned;
+  std::vector<halfedge_descriptor> corners;
+  for(std::size_t first = 0, last = 0; first < copies.size(); first = last) {
+    while(last < copies.size() && copies[last].first == copies[first].first)
+      ++last;
+    if(last - first < 2)
+      continue;
+    corners.clear();
+    for(std::size_t k = first; k < last; ++k) {
+      const auto v = number.vertex(copies[k].second);
+      if(halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge())
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(v, mesh))
+          if(!CGAL::is_border(h, mesh))
+            corners.push_back(h);
+    }
+    if(std::all_of(corners.begin(), corners.end(), [&](halfedge_descriptor h) { return same(h, corners.front()); }))
+      continue;
+    pinned.resize(num_vertices(mesh), false);
+    for(std::size_t k = first; k < last; ++k)
+      pinned[copies[k].second] = true;
+  }
+  return pinned;
+}
 
 /// the number of faces of cut vertex v (its sector)
 inline int faces_of(const Face_varying_cut_mesh& cut, typename Face_varying_cut_mesh::Vertex_index v)
@@ -469,7 +514,7 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
                 const Sharp_level<Mesh, FT>& tags, typename Face_varying_cut_mesh::Vertex_index v)
 {
   const Face_varying_cut_mesh& cut = topology.cut();
-  if(topology.is_disjoint(v))
+  if(topology.is_disjoint(v) || topology.is_pinned(v))
     return true;
   const bool on_border = bool(CGAL::is_border(v, cut));
   if(!on_border)
