@@ -10,7 +10,7 @@ set(SUBDIV_CLI_POLYGON ${PROJECT_SOURCE_DIR}/doc/data/polygon.txt)
 # subdiv_cli_test(name ARGS arg... [CONTAINS line...] [RC n] [OUTPUT f] [POINTS n] ...)
 # see run_cli.cmake for the checks; @WORK@ is the test's own empty directory.
 function(subdiv_cli_test name)
-  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES TEXTURE_POINTS FIRST_LINE LAST_LINE FILE FILE_REGEX FILE_NOT_REGEX TIMEOUT)
+  set(single RC STDOUT_REGEX STDERR_REGEX STDERR_LINES OUTPUT POINTS VERTICES FACES TEXTURE_POINTS NORMALS FIRST_LINE LAST_LINE FILE FILE_REGEX FILE_NOT_REGEX TIMEOUT)
   cmake_parse_arguments(T "" "${single}" "ARGS;CONTAINS" ${ARGN})
   list(JOIN T_ARGS "|" args)
   set(defs -DEXE=$<TARGET_FILE:cgal-subdiv> -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/${name} "-DARGS=${args}")
@@ -282,7 +282,15 @@ foreach(case
     "property_before_element.ply|line 3: a property line before any element line"
     "index_past_end.obj|line 4: face 0 has vertex index 4, but the file has 3 vertices \\(1 to 3\\)"
     "index_zero.obj|line 4: face 0 has vertex index 0 \\(OBJ counts vertices from 1, or from -1 backwards\\)"
-    "relative_index_out.obj|line 4: face 0 has vertex index -4, but only 3 vertices precede it \\(-1 to -3\\)")
+    "relative_index_out.obj|line 4: face 0 has vertex index -4, but only 3 vertices precede it \\(-1 to -3\\)"
+    # malformed vn lines and references
+    "normal_two_values.obj|line 5: normal 2 has 2 values \\(expected x y z\\)"
+    "normal_not_a_number.obj|line 4: normal 1: expected a number, found 'up'"
+    "normal_not_finite.obj|line 4: normal 1 has the value 1e999, which is not a finite number"
+    "normal_index_zero.obj|line 5: face 0 has normal index 0 \\(OBJ counts normals from 1, or from -1 backwards\\)"
+    "normal_index_past_end.obj|line 6: face 1 has normal index 2, but the file has 1 normal \\(1 to 1\\)"
+    "normal_relative_index_out.obj|line 5: face 0 has normal index -2, but only 1 normal precedes it \\(-1 to -1\\)"
+    "normal_missing.obj|line 5: face 0: corner '2' has no normal \\(vn\\), but corner '1//1' has one")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 file)
   list(GET parts 1 regex)
@@ -355,6 +363,37 @@ subdiv_cli_error(surface_uv_bad_fvar 2 "--fvar is none, corners-only, corners-pl
   ARGS surface ${islands} -o @WORK@/out.obj --scheme loop --levels 1 --fvar linear)
 subdiv_cli_error(surface_uv_bad_fvar_tag 1 "fvar_mode_out_of_range.obj' line 19: tag 'facevaryinginterpolateboundary': is 0 \\(none\\), .* not 7"
   ARGS surface ${hostile}/fvar_mode_out_of_range.obj -o @WORK@/out.obj --scheme catmull-clark --levels 1)
+
+# --- normals (OBJ vn), vertex data carried with the weights of the points ----
+# flat inputs whose every normal is (0, 0, 1): every refined normal is too,
+# one vn per vertex, numbered as the vertex, with the texture coordinates
+set(flat_quads_normals ${SUBDIV_CLI_DIR}/flat_quads_normals.obj)
+set(not_up "vn ([^0]|0 [^0]|0 0 [^1]|0 0 1[.e0-9])") # a vn line other than "vn 0 0 1"
+subdiv_cli_test(surface_normals_catmull_clark ARGS surface ${flat_quads_normals} -o @WORK@/out.obj
+  --scheme catmull-clark --levels 1 OUTPUT @WORK@/out.obj VERTICES 15 FACES 8 TEXTURE_POINTS 18 NORMALS 15
+  CONTAINS "vn 0 0 1" "f 1/1/1 7/2/7 14/3/14 10/4/10" STDERR_REGEX "^$" FILE @WORK@/out.obj FILE_NOT_REGEX "${not_up}")
+subdiv_cli_test(surface_normals_loop ARGS surface ${SUBDIV_CLI_DIR}/flat_triangles_normals.obj -o @WORK@/out.obj
+  --scheme loop --levels 1 OUTPUT @WORK@/out.obj VERTICES 13 FACES 16 TEXTURE_POINTS 13 NORMALS 13
+  CONTAINS "vn 0 0 1" "f 1/1/1 6/2/6 8/3/8" STDERR_REGEX "^$" FILE @WORK@/out.obj FILE_NOT_REGEX "${not_up}")
+# without vt: f v//vn; the schemes that make faces across the old edges
+# carry the normals too (vertex data), not the texture coordinates
+subdiv_cli_test(surface_normals_doo_sabin ARGS surface ${flat_quads_normals} -o @WORK@/out.obj
+  --scheme doo-sabin --levels 1 OUTPUT @WORK@/out.obj TEXTURE_POINTS 0 NORMALS 8 CONTAINS "vn 0 0 1" "f 2//2 3//3 4//4 1//1"
+  FILE @WORK@/out.obj FILE_NOT_REGEX "${not_up}")
+# split normals are averaged; where they cancel out, the surface's normal
+subdiv_cli_test(surface_normals_split ARGS surface ${SUBDIV_CLI_DIR}/split_normals.obj -o @WORK@/out.obj
+  --scheme loop --levels 0 OUTPUT @WORK@/out.obj
+  CONTAINS "vn 0 0 1" "vn 0 0 -1" "f 1//1 2//2 3//3" "f 1//1 3//3 4//4"
+  NORMALS 4
+  STDERR_REGEX "^cgal-subdiv: note: averaged the normals \\(vn\\) of '[^']*split_normals.obj' at 2 vertices whose corners reference different ones \\(split normals\\)[^\n]*\ncgal-subdiv: note: 2 vertices of '[^']*out.obj' got the normal of the surface there: the normals \\(vn\\) carried to them summed to zero\n$")
+# other formats hold none: a note
+subdiv_cli_test(surface_normals_to_off ARGS surface ${flat_quads_normals} ${mesh_out} --scheme catmull-clark --levels 1
+  OUTPUT @WORK@/out.off FACES 8
+  STDERR_REGEX "^cgal-subdiv: note: left the texture coordinates \\(vt\\) of [^\n]*\ncgal-subdiv: note: left the normals \\(vn\\) of '[^']*flat_quads_normals.obj' out: OUTPUT '[^']*out.off' is OFF, which holds none \\(write .obj to keep them\\)\n$")
+subdiv_cli_test(surface_normals_displace ARGS surface ${SUBDIV_CLI_DIR}/split_normals.obj -o @WORK@/out.obj
+  --scheme loop --levels 1 --displace ${SUBDIV_CLI_DIR}/tetra_heights.txt OUTPUT @WORK@/out.obj
+  STDERR_REGEX "note: left the normals \\(vn\\) of '[^']*split_normals.obj' out: --displace does not carry them yet"
+  FILE @WORK@/out.obj FILE_NOT_REGEX "vn ")
 
 # --- vertex colours (COFF, PLY), carried with the weights of the points ------
 # the square's colour is (255 x, 255 y, 0): every new vertex keeps the colour

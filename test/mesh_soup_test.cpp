@@ -135,6 +135,24 @@ using Point = std::array<double, 3>;
 using Face = std::vector<std::size_t>;
 using Uv = std::array<double, 2>;
 
+/// why the corner indices of a list of the soup (vt, vn) and its values
+/// break its invariant, or ""
+template <class Values>
+std::string broken_corner_list(const Mesh_soup& soup, const std::vector<std::size_t>& indices, const Values& values,
+                               const std::string& what)
+{
+  if(!indices.empty() && indices.size() != soup.indices.size())
+    return what + " indices and indices differ in size";
+  for(std::size_t index : indices)
+    if(index >= values.size())
+      return what + " index " + std::to_string(index) + " out of range";
+  for(const auto& value : values)
+    for(double c : value)
+      if(!std::isfinite(c))
+        return "a " + what + " value is not finite";
+  return "";
+}
+
 /// what every soup the reader returns satisfies (empty if it does)
 std::string broken_invariant(const Mesh_soup& soup)
 {
@@ -150,16 +168,8 @@ std::string broken_invariant(const Mesh_soup& soup)
     for(double c : p)
       if(!std::isfinite(c))
         return "a coordinate is not finite";
-  if(!soup.texture_indices.empty() && soup.texture_indices.size() != soup.indices.size())
-    return "texture_indices and indices differ in size";
-  for(std::size_t index : soup.texture_indices)
-    if(index >= soup.texture_points.size())
-      return "texture index " + std::to_string(index) + " out of range";
-  for(const Uv& uv : soup.texture_points)
-    for(double c : uv)
-      if(!std::isfinite(c))
-        return "a texture coordinate is not finite";
-  return "";
+  const std::string texture = broken_corner_list(soup, soup.texture_indices, soup.texture_points, "texture");
+  return texture.empty() ? broken_corner_list(soup, soup.normal_indices, soup.normals, "normal") : texture;
 }
 
 /// the bytes of a binary file, built value by value
@@ -751,10 +761,11 @@ TEST(MeshSoupObj, ReadsACubeWithEveryFaceForm)
   // face 0 (f 1 4 3 2) has no vt, face 1 (f 5/1 6/2 7/1 8/2) has
   EXPECT_EQ(soup.texture_points, (std::vector<Uv>{{0, 0}, {1, 0}}));
   EXPECT_TRUE(soup.texture_indices.empty());
-  EXPECT_EQ(soup.notes, (std::vector<std::string>{
-                          "ignored the texture coordinates (vt) of 'a.obj': face 0 has none, but face 1 has",
-                          "ignored 1 material library (mtllib) of 'a.obj'", "ignored 1 normal (vn) of 'a.obj'",
-                          "ignored 1 material assignment (usemtl) of 'a.obj'"}));
+  EXPECT_EQ(soup.notes,
+            (std::vector<std::string>{
+              "ignored the texture coordinates (vt) of 'a.obj': face 0 has none, but face 1 has",
+              "ignored the normals (vn) of 'a.obj': face 0 has none, but face 2 has",
+              "ignored 1 material library (mtllib) of 'a.obj'", "ignored 1 material assignment (usemtl) of 'a.obj'"}));
 }
 
 TEST(MeshSoupObj, KeepsTheTags)
@@ -889,12 +900,55 @@ TEST(MeshSoupObj, ReadsTextureCoordinatesWithNormals)
   const Mesh_soup soup = parse_obj(triangle + "f 1/1/1 2/2/1 3/3/1\nf 3/3/ 2/2/ 1/1/\n");
   EXPECT_EQ(soup.indices, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
   EXPECT_EQ(soup.texture_indices, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
-  EXPECT_EQ(soup.notes, (std::vector<std::string>{"ignored 1 normal (vn) of 'a.obj'"}));
+  EXPECT_EQ(soup.notes,
+            (std::vector<std::string>{"ignored the normals (vn) of 'a.obj': face 0 has them, but face 1 has none"}));
   // v//vn and v/ give no texture coordinate
   const Mesh_soup without = parse_obj(triangle + "f 1//1 2//1 3//1\nf 3/ 2/ 1/\n");
   EXPECT_TRUE(without.texture_indices.empty());
-  EXPECT_EQ(without.notes, (std::vector<std::string>{"no face refers to the 3 texture coordinates (vt) of 'a.obj'",
-                                                     "ignored 1 normal (vn) of 'a.obj'"}));
+  EXPECT_EQ(without.notes,
+            (std::vector<std::string>{"no face refers to the 3 texture coordinates (vt) of 'a.obj'",
+                                      "ignored the normals (vn) of 'a.obj': face 0 has them, but face 1 has none"}));
+}
+
+TEST(MeshSoupObj, ReadsNormals)
+{
+  // v//vn and v/vt/vn, relative and forward references, normals as written
+  const Mesh_soup soup = parse_obj(
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nvt 0 0\n"
+    "f 1//1 2//-1 3//2\nf 3/1/2 2/1/1 1/1/1\nvn 0 1e-3 -1\n");
+  EXPECT_EQ(soup.normals, (std::vector<Point>{{0, 0, 2}, {0, 1e-3, -1}}));
+  EXPECT_EQ(soup.normal_indices, (std::vector<std::size_t>{0, 0, 1, 1, 0, 0}));
+  EXPECT_TRUE(soup.texture_indices.empty());
+  EXPECT_EQ(broken_invariant(soup), "");
+  EXPECT_EQ(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nf 1 2 3\n").notes,
+            (std::vector<std::string>{"no face refers to the 2 normals (vn) of 'a.obj'"}));
+}
+
+TEST(MeshSoupObj, RefusesBadNormals)
+{
+  EXPECT_EQ(obj_refusal("vn\n"), "'a.obj' line 1: normal 1 has no value (expected x y z)");
+  EXPECT_EQ(obj_refusal("vn 0 0 1\nvn 0 1\n"), "'a.obj' line 2: normal 2 has 2 values (expected x y z)");
+  EXPECT_EQ(obj_refusal("vn 0 0 1 0\n"), "'a.obj' line 1: normal 1 has 4 values (expected x y z)");
+  EXPECT_EQ(obj_refusal("vn 0 y 1\n"), "'a.obj' line 1: normal 1: expected a number, found 'y'");
+  EXPECT_EQ(obj_refusal("vn 0 0 inf\n"), "'a.obj' line 1: normal 1 has the value inf, which is not a finite number");
+}
+
+TEST(MeshSoupObj, RefusesBadNormalIndices)
+{
+  const std::string normals = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 1 0\n"; // 5 lines
+  EXPECT_EQ(obj_refusal(normals + "f 1//1 2//0 3//1\n"),
+            "'a.obj' line 6: face 0 has normal index 0 (OBJ counts normals from 1, or from -1 backwards)");
+  EXPECT_EQ(obj_refusal(normals + "f 1//1 2//2 3//3\n"),
+            "'a.obj' line 6: face 0 has normal index 3, but the file has 2 normals (1 to 2)");
+  EXPECT_EQ(obj_refusal(normals + "f 1//1 2//2 3//-3\n"),
+            "'a.obj' line 6: face 0 has normal index -3, but only 2 normals precede it (-1 to -2)");
+  EXPECT_EQ(obj_refusal(normals + "f 1//1 2 3//1\n"),
+            "'a.obj' line 6: face 0: corner '2' has no normal (vn), but corner '1//1' has one");
+  EXPECT_EQ(obj_refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n"),
+            "'a.obj' line 4: face 0 has normal index 1, but the file has no normals");
+  // the earliest face past the end, whichever list it refers to
+  EXPECT_EQ(obj_refusal(normals + "vt 0 0\nf 1/1/1 2/1/1 3/1/4\nf 1/2/1 2/1/1 3/1/1\n"),
+            "'a.obj' line 7: face 0 has normal index 4, but the file has 2 normals (1 to 2)");
 }
 
 TEST(MeshSoupObj, NegativeTextureIndicesCountBackFromTheLastRead)

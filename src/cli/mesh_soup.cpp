@@ -103,10 +103,11 @@ std::string too_few_vertices(std::size_t face, const std::string& count)
 /// what the index of a face corner refers to, as the messages name it
 struct Index_kind
 {
-  const char *one, *many;
+  const char *one, *many, *keyword; // the keyword of the lines listing them in OBJ
 };
-const Index_kind vertex_kind{"vertex", "vertices"};
-const Index_kind texture_kind{"texture coordinate", "texture coordinates"}; // OBJ's vt
+const Index_kind vertex_kind{"vertex", "vertices", "v"};
+const Index_kind texture_kind{"texture coordinate", "texture coordinates", "vt"};
+const Index_kind normal_kind{"normal", "normals", "vn"};
 
 /// `index` as the file wrote it; `count` counted as the file does, from 0 or 1
 std::string index_out_of_range(std::size_t face, const std::string& index, std::size_t count, bool from_one,
@@ -939,6 +940,8 @@ private:
       read_vertex();
     else if(keyword == "vt")
       read_texture_point();
+    else if(keyword == "vn")
+      read_normal();
     else if(keyword == "f")
       read_face();
     else if(keyword == "t")
@@ -961,103 +964,156 @@ private:
   /// `vt u [v [w]]`: v is 0 if missing, w (a depth, for 3D textures) is dropped
   void read_texture_point()
   {
-    const std::size_t number = m_soup.texture_points.size() + 1;
-    if(m_soup.texture_points.size() == max_vertices)
-      m_text.fail("more than " + std::to_string(max_vertices) +
-                  " texture coordinates (vt) are not supported (the meshes use 32-bit indices)");
-    std::array<double, 2> uv{};
-    std::size_t values = 0;
-    for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line(), ++values) {
-      if(values == 3)
-        m_text.fail(numbered("texture coordinate", number) + " has " +
-                    std::to_string(4 + m_text.tokens_left_on_line()) + " values (expected u, u v or u v w)");
-      double value = 0;
-      if(!parse_real(token, value))
-        m_text.fail(numbered("texture coordinate", number) + ": expected a number, found " + shown(token));
-      if(!std::isfinite(value))
-        m_text.fail(numbered("texture coordinate", number) + " has the value " + clipped(token) +
-                    ", which is not a finite number");
-      if(values < 2)
-        uv[values] = value;
-    }
-    if(values == 0)
-      m_text.fail(numbered("texture coordinate", number) + " has no value (expected u, u v or u v w)");
-    m_soup.texture_points.push_back(uv);
+    refuse_more_than_max(m_soup.texture_points.size(), texture_kind);
+    const std::string item = numbered(texture_kind.one, m_soup.texture_points.size() + 1);
+    m_soup.texture_points.push_back(read_values<2>(item, 1, 3, "u, u v or u v w"));
   }
 
-  /// a face corner: its vertex and its texture coordinate (0: none), from 1
+  /// `vn x y z`, kept as written: a reference normalises it
+  void read_normal()
+  {
+    refuse_more_than_max(m_soup.normals.size(), normal_kind);
+    const std::string item = numbered(normal_kind.one, m_soup.normals.size() + 1);
+    m_soup.normals.push_back(read_values<3>(item, 3, 3, "x y z"));
+  }
+
+  void refuse_more_than_max(std::size_t so_far, const Index_kind& kind)
+  {
+    if(so_far == max_vertices)
+      m_text.fail("more than " + std::to_string(max_vertices) + " " + kind.many + " (" + kind.keyword +
+                  ") are not supported (the meshes use 32-bit indices)");
+  }
+
+  /// the values on the rest of the line of `item`: from `fewest` to `most`
+  /// finite numbers (`expected` names them), the first `kept` of them returned
+  /// (the missing ones 0)
+  template <std::size_t kept>
+  std::array<double, kept> read_values(const std::string& item, std::size_t fewest, std::size_t most,
+                                       const char* expected)
+  {
+    std::array<double, kept> values{};
+    std::size_t count = 0;
+    for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line(), ++count) {
+      if(count == most)
+        m_text.fail(item + " has " + std::to_string(most + 1 + m_text.tokens_left_on_line()) + " values (expected " +
+                    expected + ")");
+      double value = 0;
+      if(!parse_real(token, value))
+        m_text.fail(item + ": expected a number, found " + shown(token));
+      if(!std::isfinite(value))
+        m_text.fail(item + " has the value " + clipped(token) + ", which is not a finite number");
+      if(count < kept)
+        values[count] = value;
+    }
+    if(count < fewest)
+      m_text.fail(item + " has " + (count == 0 ? std::string("no value") : count_of(count, "value", "values")) +
+                  " (expected " + expected + ")");
+    return values;
+  }
+
+  /// a face corner: its vertex, texture coordinate and normal (0: none), from 1
   struct Corner
   {
-    unsigned long long vertex, texture;
+    unsigned long long vertex, texture, normal;
   };
 
-  /// A face: its corners all have a texture coordinate, or none has. The
-  /// texture indices are pushed with the vertex indices, as long as every
-  /// face has them: never more of them than of those.
+  /// The references of the faces to one list besides the vertices (vt, vn):
+  /// every corner of a face has one, or none has; the soup keeps them (in
+  /// `kept`) only if every face has them.
+  struct Corner_references
+  {
+    const Index_kind& kind;
+    std::vector<std::size_t>& kept; // the soup's indices of this list
+    Forward_references forward;
+    bool face_0_has = false;  // whether face 0 has them
+    std::size_t mismatch = 0; // the first face that differs from face 0 there (0: none)
+  };
+
+  /// what a face being read refers to in one list
+  struct Face_references
+  {
+    bool has = false;
+    unsigned long long forward = 0; // the largest index past the list so far
+  };
+
+  /// A face: its vertex indices, and those of the lists its corners refer to,
+  /// pushed with them as long as every face has them: never more of them than
+  /// of those.
   void read_face()
   {
     const std::size_t face = m_soup.number_of_faces();
-    const bool keep_texture = m_texture_mismatch == 0 && (face == 0 || m_faces_textured);
     std::size_t corners = 0;
     std::string_view first_corner;
-    bool textured = false;
-    // the largest indices past the vertices and the texture coordinates so far
-    unsigned long long forward = 0, texture_forward = 0;
+    Face_references texture, normal;
+    unsigned long long forward = 0; // the largest vertex index past the vertices so far
     for(std::string_view token = m_text.token_on_line(); !token.empty(); token = m_text.token_on_line()) {
       const Corner corner = corner_of(token, face);
-      if(corners == 0) {
+      if(corners == 0)
         first_corner = token;
-        textured = corner.texture != 0;
-      } else if((corner.texture != 0) != textured) {
-        m_text.fail("face " + std::to_string(face) + ": corner " + shown(textured ? token : first_corner) +
-                    " has no texture coordinate (vt), but corner " + shown(textured ? first_corner : token) +
-                    " has one");
-      }
+      add_reference(m_texture, texture, face, corners, corner.texture, m_soup.texture_points.size(),
+                    {first_corner, token});
+      add_reference(m_normal, normal, face, corners, corner.normal, m_soup.normals.size(), {first_corner, token});
       if(corner.vertex > m_soup.points.size() && corner.vertex > forward)
         forward = corner.vertex;
-      if(corner.texture > m_soup.texture_points.size() && corner.texture > texture_forward)
-        texture_forward = corner.texture;
       m_soup.indices.push_back(static_cast<std::size_t>(corner.vertex - 1));
-      if(textured && keep_texture)
-        m_soup.texture_indices.push_back(static_cast<std::size_t>(corner.texture - 1));
       ++corners;
     }
     if(corners < 3)
       m_text.fail(too_few_vertices(face, std::to_string(corners)));
     if(forward != 0)
       m_forward.add(face, m_text.line(), forward);
-    if(texture_forward != 0)
-      m_texture_forward.add(face, m_text.line(), texture_forward);
-    compare_texture_use(face, textured);
+    end_references(m_texture, texture, face);
+    end_references(m_normal, normal, face);
     end_face(m_soup);
   }
 
-  /// the soup keeps the texture indices only if every face has them: the
-  /// first face that differs from face 0 drops them
-  void compare_texture_use(std::size_t face, bool textured)
+  /// the reference `index` (0: none) of corner `corner` of `face` to a list
+  /// of `so_far` values; `tokens`: the face's first corner and this one
+  void add_reference(Corner_references& references, Face_references& in_face, std::size_t face, std::size_t corner,
+                     unsigned long long index, std::size_t so_far, const std::array<std::string_view, 2>& tokens)
   {
+    if(corner == 0) {
+      in_face.has = index != 0;
+    } else if((index != 0) != in_face.has) {
+      const std::string_view without = in_face.has ? tokens[1] : tokens[0], with = in_face.has ? tokens[0] : tokens[1];
+      m_text.fail("face " + std::to_string(face) + ": corner " + shown(without) + " has no " + references.kind.one +
+                  " (" + references.kind.keyword + "), but corner " + shown(with) + " has one");
+    }
+    if(index > so_far && index > in_face.forward)
+      in_face.forward = index;
+    if(in_face.has && references.mismatch == 0 && (face == 0 || references.face_0_has))
+      references.kept.push_back(static_cast<std::size_t>(index - 1));
+  }
+
+  /// the soup keeps the indices of a list only if every face has them: the
+  /// first face that differs from face 0 drops them
+  void end_references(Corner_references& references, const Face_references& in_face, std::size_t face)
+  {
+    if(in_face.forward != 0)
+      references.forward.add(face, m_text.line(), in_face.forward);
     if(face == 0) {
-      m_faces_textured = textured;
-    } else if(textured != m_faces_textured && m_texture_mismatch == 0) {
-      m_texture_mismatch = face;
-      std::vector<std::size_t>().swap(m_soup.texture_indices);
+      references.face_0_has = in_face.has;
+    } else if(in_face.has != references.face_0_has && references.mismatch == 0) {
+      references.mismatch = face;
+      std::vector<std::size_t>().swap(references.kept);
     }
   }
 
-  /// the corner `v`, `v/vt`, `v//vn` or `v/vt/vn` (an empty vt or vn is none);
-  /// the normal is only checked to be an integer
+  /// the corner `v`, `v/vt`, `v//vn` or `v/vt/vn` (an empty vt or vn is none)
   Corner corner_of(std::string_view corner, std::size_t face)
   {
     std::string_view parts[3];
     long long vertex = 0, texture = 0, normal = 0;
     if(!split_corner(corner, parts) || parse_integer(parts[0], vertex) == Integer::invalid ||
        (!parts[1].empty() && parse_integer(parts[1], texture) == Integer::invalid) ||
-       (!parts[2].empty() && parse_integer(parts[2], normal) != Integer::ok))
+       (!parts[2].empty() && parse_integer(parts[2], normal) == Integer::invalid))
       m_text.fail("face " + std::to_string(face) + ": " + shown(corner) +
                   " is not a vertex reference (expected v, v/vt, v//vn or v/vt/vn)");
-    Corner result{index_from(vertex, parts[0], face, m_soup.points.size(), vertex_kind), 0};
+    Corner result{index_from(vertex, parts[0], face, m_soup.points.size(), vertex_kind), 0, 0};
     if(!parts[1].empty())
       result.texture = index_from(texture, parts[1], face, m_soup.texture_points.size(), texture_kind);
+    if(!parts[2].empty())
+      result.normal = index_from(normal, parts[2], face, m_soup.normals.size(), normal_kind);
     return result;
   }
 
@@ -1191,19 +1247,27 @@ private:
     if(m_extra_vertex_values_line != 0)
       m_soup.notes.push_back("ignored the values after x y z (w, colours) of the vertices" + of + " (from line " +
                              std::to_string(m_extra_vertex_values_line) + ")");
-    if(m_texture_mismatch != 0)
-      m_soup.notes.push_back("ignored the texture coordinates (vt)" + of + ": face 0 has " +
-                             (m_faces_textured ? "them" : "none") + ", but " + numbered("face", m_texture_mismatch) +
-                             (m_faces_textured ? " has none" : " has"));
-    else if(!m_faces_textured && !m_soup.texture_points.empty())
-      m_soup.notes.push_back(
-        "no face refers to the " +
-        count_of(m_soup.texture_points.size(), "texture coordinate (vt)", "texture coordinates (vt)") + of);
+    note_unused(m_texture, m_soup.texture_points.size(), of);
+    note_unused(m_normal, m_soup.normals.size(), of);
     for(const Ignored& ignored : m_ignored)
       m_soup.notes.push_back("ignored " + describe_ignored(ignored) + of);
     if(m_other_ignored_lines > 0)
       m_soup.notes.push_back("ignored " + count_of(m_other_ignored_lines, "line", "lines") +
                              " with further unknown keywords" + of);
+  }
+
+  /// a note when the `count` values of a list are not kept
+  void note_unused(const Corner_references& references, std::size_t count, const std::string& of)
+  {
+    const std::string keyword = std::string(" (") + references.kind.keyword + ")";
+    if(references.mismatch != 0)
+      m_soup.notes.push_back(std::string("ignored the ") + references.kind.many + keyword + of + ": face 0 has " +
+                             (references.face_0_has ? "them" : "none") + ", but " +
+                             numbered("face", references.mismatch) + (references.face_0_has ? " has none" : " has"));
+    else if(!references.face_0_has && count != 0)
+      m_soup.notes.push_back(
+        "no face refers to the " +
+        count_of(count, (references.kind.one + keyword).c_str(), (references.kind.many + keyword).c_str()) + of);
   }
 
   static std::string describe_ignored(const Ignored& ignored)
@@ -1213,7 +1277,6 @@ private:
       const char *keyword, *one, *many;
     };
     static const Known known[] = {
-      {"vn", "normal (vn)", "normals (vn)"},
       {"vp", "parameter-space vertex (vp)", "parameter-space vertices (vp)"},
       {"l", "polyline (l)", "polylines (l)"},
       {"p", "point element (p)", "point elements (p)"},
@@ -1235,26 +1298,36 @@ private:
   }
 
   /// the first face, in the order of the file, with an index past the end
+  /// (of the vertices first, on one line)
   void check_forward_references() const
   {
-    const Forward_reference* vertex = m_forward.first_past(m_soup.points.size());
-    const Forward_reference* texture = m_texture_forward.first_past(m_soup.texture_points.size());
-    if(vertex != nullptr && (texture == nullptr || vertex->line <= texture->line))
-      m_text.fail_at_line(vertex->line,
-                          index_out_of_range(vertex->face, std::to_string(vertex->index), m_soup.points.size(), true));
-    if(texture != nullptr)
-      m_text.fail_at_line(texture->line, index_out_of_range(texture->face, std::to_string(texture->index),
-                                                            m_soup.texture_points.size(), true, texture_kind));
+    struct Past
+    {
+      const Forward_reference* reference;
+      std::size_t count;
+      const Index_kind& kind;
+    };
+    const Past lists[] = {
+      {m_forward.first_past(m_soup.points.size()), m_soup.points.size(), vertex_kind},
+      {m_texture.forward.first_past(m_soup.texture_points.size()), m_soup.texture_points.size(), texture_kind},
+      {m_normal.forward.first_past(m_soup.normals.size()), m_soup.normals.size(), normal_kind}};
+    const Past* first = nullptr;
+    for(const Past& list : lists)
+      if(list.reference != nullptr && (first == nullptr || list.reference->line < first->reference->line))
+        first = &list;
+    if(first != nullptr)
+      m_text.fail_at_line(first->reference->line,
+                          index_out_of_range(first->reference->face, std::to_string(first->reference->index),
+                                             first->count, true, first->kind));
   }
 
   const char* m_data;
   std::size_t m_size;
   Text_cursor m_text;
   Mesh_soup m_soup;
-  Forward_references m_forward;         // to vertices
-  Forward_references m_texture_forward; // to texture coordinates
-  bool m_faces_textured = false;        // whether face 0 has texture coordinates (vt)
-  std::size_t m_texture_mismatch = 0;   // the first face that differs from face 0 there (0: none)
+  Forward_references m_forward; // to vertices
+  Corner_references m_texture{texture_kind, m_soup.texture_indices, {}};
+  Corner_references m_normal{normal_kind, m_soup.normal_indices, {}};
   std::vector<Ignored> m_ignored;
   std::size_t m_other_ignored_lines = 0;
   std::size_t m_extra_vertex_values_line = 0;

@@ -10,8 +10,8 @@
 //
 // Numbering in the messages: faces from 0 in the order of the file (the
 // index of the face in the soup); vertices as the file numbers them (from 0
-// in OFF and PLY, from 1 in OBJ), and so OBJ's texture coordinates (vt, from
-// 1); lines from 1; byte offsets from 0.
+// in OFF and PLY, from 1 in OBJ), and so OBJ's texture coordinates and
+// normals (vt and vn, from 1); lines from 1; byte offsets from 0.
 #ifndef CGAL_SUBDIV_CLI_MESH_SOUP_H
 #define CGAL_SUBDIV_CLI_MESH_SOUP_H
 
@@ -59,6 +59,14 @@ struct Mesh_soup
   /// face gives every corner one (`v/vt` or `v/vt/vn`); a note says why
   /// when there are texture points.
   std::vector<std::size_t> texture_indices;
+  /// OBJ only: every `vn` line in the order of the file, (x, y, z), finite,
+  /// as written (not normalised)
+  std::vector<std::array<double, 3>> normals;
+  /// OBJ only: empty, or the normal of each corner, index for index with
+  /// `indices` (every index < normals.size()). Empty unless every face gives
+  /// every corner one (`v//vn` or `v/vt/vn`); a note says why when there are
+  /// normals.
+  std::vector<std::size_t> normal_indices;
   /// ASCII OFF (COFF) and PLY only: empty, or the colour of every point,
   /// index for index with `points`: red, green, blue and alpha from 0 to 255
   /// (components written as reals, from 0 to 1, are scaled and rounded;

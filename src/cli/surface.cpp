@@ -163,11 +163,24 @@ std::array<double, 3> unit_normal(const Point_3& a, const Point_3& b, const Poin
     return {0, 0, 0};
   const double u[3] = {(b[0] - a[0]) / scale, (b[1] - a[1]) / scale, (b[2] - a[2]) / scale};
   const double v[3] = {(c[0] - a[0]) / scale, (c[1] - a[1]) / scale, (c[2] - a[2]) / scale};
-  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if(!(length > 0))
-    return {0, 0, 0};
-  return {n[0] / length, n[1] / length, n[2] / length};
+  const Normal n =
+    unit_or_zero(Normal(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]));
+  return {n.x(), n.y(), n.z()};
+}
+
+// the normal of the surface at `v`: the normalised sum of the unit normals
+// of its corners (zero where that is zero)
+Normal surface_normal(const Surface& mesh, Surface::Vertex_index v)
+{
+  Normal sum = CGAL::NULL_VECTOR;
+  for(const Surface::Halfedge_index h : CGAL::halfedges_around_target(v, mesh)) {
+    if(mesh.is_border(h))
+      continue;
+    const std::array<double, 3> n =
+      unit_normal(mesh.point(v), mesh.point(mesh.target(mesh.next(h))), mesh.point(mesh.source(h)));
+    sum = sum + Normal(n[0], n[1], n[2]);
+  }
+  return unit_or_zero(sum);
 }
 
 void put_uint32_le(std::ostream& out, std::uint32_t bits)
@@ -247,9 +260,20 @@ std::vector<std::size_t> write_obj_texture_points(const Surface& mesh, const Tex
   return number_of_index;
 }
 
+// the vn lines of a mesh with vertex normals, one per vertex, in the order
+// of the v lines, so that a corner's normal has its vertex's number
+void write_obj_normals(const Normal_map& normals, const Surface& mesh, std::ostream& out)
+{
+  for(const Surface::Vertex_index v : mesh.vertices()) {
+    const Normal n = unit_or_zero(normals[v]); // finish_normals did it; never a nan here
+    out << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
+  }
+}
+
 // OBJ: the points (v), the texture coordinates if the mesh has them (vt,
 // numbered in the order of the first corner that uses them, so that a value
-// no corner uses is left out), the faces (f v or f v/vt) and, with `tags`,
+// no corner uses is left out), the vertex normals if it has them (vn, one per
+// vertex), the faces (f v, f v/vt, f v//vn or f v/vt/vn) and, with `tags`,
 // the tag lines; vertices and faces numbered in the mesh's order, as the tag
 // lines number them (from 0 there)
 void write_obj(const Surface& mesh, std::ostream& out, const Sharp_options* tags,
@@ -266,12 +290,20 @@ void write_obj(const Surface& mesh, std::ostream& out, const Sharp_options* tags
     textured ? mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first : Texture_index_map();
   const std::vector<std::size_t> number_of_index =
     textured ? write_obj_texture_points(mesh, indices, out) : std::vector<std::size_t>();
+  const std::optional<Normal_map> normals = normals_of(mesh);
+  if(normals)
+    write_obj_normals(*normals, mesh, out);
   for(const Surface::Face_index f : mesh.faces()) {
     out << 'f';
     for(const Surface::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
-      out << ' ' << mesh.target(h).idx() + 1;
+      const std::size_t vertex = mesh.target(h).idx() + 1;
+      out << ' ' << vertex;
+      if(textured || normals)
+        out << '/';
       if(textured)
-        out << '/' << number_of_index[indices[h]];
+        out << number_of_index[indices[h]];
+      if(normals)
+        out << '/' << vertex;
     }
     out << '\n';
   }
@@ -282,6 +314,23 @@ void write_obj(const Surface& mesh, std::ostream& out, const Sharp_options* tags
 }
 
 } // namespace
+
+std::size_t finish_normals(Surface& mesh)
+{
+  const std::optional<Normal_map> normals = normals_of(mesh);
+  if(!normals)
+    return 0;
+  std::size_t fallbacks = 0;
+  for(const Surface::Vertex_index v : mesh.vertices()) {
+    Normal& n = (*normals)[v];
+    n = unit_or_zero(n);
+    if(n == CGAL::NULL_VECTOR) {
+      n = surface_normal(mesh, v);
+      ++fallbacks;
+    }
+  }
+  return fallbacks;
+}
 
 void write_surface(const Surface& mesh, const std::string& path, bool binary, const Sharp_options* tags,
                    CGAL::Subdiv::Face_varying_interpolation face_varying)

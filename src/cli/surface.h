@@ -123,6 +123,13 @@ Largest_coordinate largest_coordinate(const Surface& mesh);
 void check_finite_result(const Surface& result, const std::string& what, const std::string& input,
                          const Largest_coordinate& largest, const std::vector<std::size_t>& file_numbers);
 
+/// normalises the vertex normals of `mesh`, if it has them (surface_from_soup.h):
+/// a vertex whose carried normal is zero (its corners' normals cancelled out,
+/// or a `vn 0 0 0`) gets the normal of the surface there, the normalised sum of
+/// the unit normals of its corners, or 0 0 0 where that is zero too (a
+/// degenerate neighbourhood). Returns how many vertices fell back so.
+std::size_t finish_normals(Surface& mesh);
+
 /// writes `mesh` to `path` (format from the extension), ASCII with 17
 /// significant digits or, with `binary`, binary PLY or STL (STL's 32-bit
 /// floats), under a temporary name renamed at the end;
@@ -130,7 +137,8 @@ void check_finite_result(const Surface& result, const std::string& what, const s
 /// writes `mesh` (with `tags`, an OBJ file also gets the sharpness maps and
 /// the options as OpenSubdiv's tag lines; the texture coordinates of a mesh
 /// that has them go to an OBJ file as vt lines with their seams, and
-/// `face_varying` as the tag `t facevaryinginterpolateboundary`)
+/// `face_varying` as the tag `t facevaryinginterpolateboundary`; its vertex
+/// normals as one vn line per vertex, the corners `v/vt/vn` or `v//vn`)
 void write_surface(
   const Surface& mesh, const std::string& path, bool binary = false, const Sharp_options* tags = nullptr,
   CGAL::Subdiv::Face_varying_interpolation face_varying = CGAL::Subdiv::Face_varying_interpolation::corners_plus1);

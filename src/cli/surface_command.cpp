@@ -86,6 +86,20 @@ bool keep_texture_points(Surface& mesh, const Surface_scheme& scheme, const Pars
   return false;
 }
 
+// why vertex data of INPUT cannot reach OUTPUT, empty if it can: --displace
+// does not carry it, and OUTPUT's format may hold none (`holds`; `formats`
+// names those that do)
+std::string why_vertex_data_left_out(const Parsed_args& args, Mesh_format output_format, bool holds,
+                                     const char* formats)
+{
+  if(args.has("--displace"))
+    return "--displace does not carry them yet";
+  if(!holds)
+    return "OUTPUT '" + args.value("-o") + "' is " + mesh_format_name(output_format) + ", which holds none (write " +
+           formats + " to keep them)";
+  return "";
+}
+
 // whether the vertex colours of `mesh` (a COFF or PLY file's) are carried to
 // OUTPUT: they are removed, with a note, where they cannot be
 void keep_colours(Surface& mesh, const Parsed_args& args, Mesh_format output_format, const std::string& input,
@@ -93,16 +107,36 @@ void keep_colours(Surface& mesh, const Parsed_args& args, Mesh_format output_for
 {
   if(!colours_of(mesh))
     return;
-  std::string why;
-  if(args.has("--displace"))
-    why = "--displace does not carry them yet";
-  else if(output_format != Mesh_format::off && output_format != Mesh_format::ply)
-    why = "OUTPUT '" + args.value("-o") + "' is " + mesh_format_name(output_format) +
-          ", which holds none (write .off or .ply to keep them)";
+  const std::string why = why_vertex_data_left_out(
+    args, output_format, output_format == Mesh_format::off || output_format == Mesh_format::ply, ".off or .ply");
   if(why.empty())
     return;
   notes.push_back("left the vertex colours of '" + input + "' out: " + why);
   remove_colours(mesh);
+}
+
+// whether the vertex normals of `mesh` (an OBJ file's vn) are carried to
+// OUTPUT: they are removed, with a note, where they cannot be
+void keep_normals(Surface& mesh, const Parsed_args& args, Mesh_format output_format, const std::string& input,
+                  std::vector<std::string>& notes)
+{
+  if(!normals_of(mesh))
+    return;
+  const std::string why = why_vertex_data_left_out(args, output_format, output_format == Mesh_format::obj, ".obj");
+  if(why.empty())
+    return;
+  notes.push_back("left the normals (vn) of '" + input + "' out: " + why);
+  remove_normals(mesh);
+}
+
+// the carried normals of `mesh`, if any, made unit length before writing
+void finish_carried_normals(Surface& mesh, const std::string& output, std::vector<std::string>& notes)
+{
+  const std::size_t fallbacks = finish_normals(mesh);
+  if(fallbacks > 0)
+    notes.push_back(std::to_string(fallbacks) + (fallbacks == 1 ? " vertex" : " vertices") + " of '" + output +
+                    "' got the normal of the surface there: the normals (vn) carried to " +
+                    (fallbacks == 1 ? "it" : "them") + " summed to zero");
 }
 
 const char* const surface_help_head = R"(usage: cgal-subdiv surface INPUT -o OUTPUT --scheme SCHEME --levels N [--limit]
@@ -128,8 +162,12 @@ writing not included).
                         weights of the points to an OFF or PLY OUTPUT; the
                         texture coordinates of an OBJ file (vt, when every
                         face references them: f v/vt) with their seams (see
-                        --fvar) to an OBJ OUTPUT. Normals and other
-                        properties are ignored.
+                        --fvar) to an OBJ OUTPUT; its normals (vn, when
+                        every face references them) as vertex data: a
+                        vertex gets the mean of its corners' normals,
+                        refined with the weights of the points, written
+                        normalised, one vn per vertex, to an OBJ OUTPUT.
+                        Other properties are ignored.
                         OpenSubdiv's OBJ tags are read: t crease, t corner
                         (vertices from 0), t hole (faces from 0),
                         t interpolateboundary (RenderMan's numbers: 0 none,
@@ -341,6 +379,7 @@ int surface_command(const std::vector<std::string>& arguments)
   // takes the plain path when they are all zero, as they are then)
   const bool textured = keep_texture_points(mesh, scheme, args, output_format, input, notes);
   keep_colours(mesh, args, output_format, input, notes);
+  keep_normals(mesh, args, output_format, input, notes);
   const Sharp_options* refine_options = tagged || textured ? &sharp_options : nullptr;
   if(tagged && !scheme.limit_sharp && (displace || args.has("--limit")))
     throw Input_error("--scheme " + scheme.name +
@@ -380,6 +419,7 @@ int surface_command(const std::vector<std::string>& arguments)
   check_finite_result(mesh, step, input, largest, file_numbers);
   if(talking)
     std::cerr << "cgal-subdiv: writing " << output << std::endl;
+  finish_carried_normals(mesh, output, notes);
   write_surface(mesh, output, args.has("--binary"), tagged ? &sharp_options : nullptr, sharp_options.face_varying);
 
   for(const std::string& note : notes)

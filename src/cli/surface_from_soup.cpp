@@ -9,6 +9,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <map>
 #include <numeric>
@@ -211,26 +212,100 @@ void add_texture_points(Surface& mesh, const Mesh_soup& soup, const std::vector<
   }
 }
 
-// the colours of the soup's points in the map of the mesh, whose vertex v
-// is the point of the file numbered file_numbers[origin[v]]
-void add_colours(Surface& mesh, const Mesh_soup& soup, const std::vector<std::size_t>& file_numbers,
-                 std::size_t first_number, const std::vector<std::size_t>& origin)
+// the map `name` of the mesh, whose vertex v is the point of the file
+// numbered file_numbers[origin[v]], holding `convert` of that point's value
+// in `of_point` (nothing if it is empty)
+template <class Value, class Source, class Convert>
+void add_vertex_map(Surface& mesh, const char* name, const std::vector<Source>& of_point,
+                    const std::vector<std::size_t>& file_numbers, std::size_t first_number,
+                    const std::vector<std::size_t>& origin, Convert convert)
 {
-  if(soup.colours.empty())
+  if(of_point.empty())
     return;
-  Colour_map colours = mesh.add_property_map<Surface::Vertex_index, CGAL::IO::Color>(colour_name).first;
-  for(const Surface::Vertex_index v : mesh.vertices()) {
-    const auto& c = soup.colours[file_numbers[origin[v]] - first_number];
-    colours[v] = CGAL::IO::Color(c[0], c[1], c[2], c[3]);
+  auto map = mesh.add_property_map<Surface::Vertex_index, Value>(name).first;
+  for(const Surface::Vertex_index v : mesh.vertices())
+    map[v] = convert(of_point[file_numbers[origin[v]] - first_number]);
+}
+
+// the normal of every point of the soup that a face uses: the normalised
+// mean of the unit normals its corners reference (empty if the soup keeps
+// none). A mean rather than one corner's pick: split normals (a hard edge, a
+// flat-shaded export) have no single value at a vertex, and the surface
+// refined is smooth there anyway. A note counts the points that had them.
+std::vector<Normal> point_normals(const Mesh_soup& soup, const std::string& path, std::vector<std::string>& notes)
+{
+  if(soup.normal_indices.empty())
+    return {};
+  std::vector<Normal> sum(soup.points.size(), CGAL::NULL_VECTOR);
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> first(soup.points.size(), none); // the first normal referenced at the point
+  std::vector<bool> split(soup.points.size(), false);
+  const auto unit = [&soup](std::size_t index) {
+    const auto& n = soup.normals[index];
+    return unit_or_zero(Normal(n[0], n[1], n[2]));
+  };
+  for(std::size_t k = 0; k < soup.indices.size(); ++k) {
+    const std::size_t point = soup.indices[k], index = soup.normal_indices[k];
+    sum[point] = sum[point] + unit(index);
+    if(first[point] == none)
+      first[point] = index;
+    else if(unit(index) != unit(first[point]))
+      split[point] = true;
   }
+  for(Normal& n : sum)
+    n = unit_or_zero(n);
+  const std::size_t splits = static_cast<std::size_t>(std::count(split.begin(), split.end(), true));
+  if(splits > 0)
+    notes.push_back("averaged the normals (vn) of '" + path + "' at " + std::to_string(splits) +
+                    (splits == 1 ? " vertex whose corners reference" : " vertices whose corners reference") +
+                    " different ones (split normals): the normals are vertex data, as the refined surface is smooth");
+  return sum;
+}
+
+// the colours and the normals of the soup's points in the maps of the mesh,
+// whose vertex v is the point of the file numbered file_numbers[origin[v]]
+void add_vertex_data(Surface& mesh, const Mesh_soup& soup, const std::string& path,
+                     const std::vector<std::size_t>& file_numbers, std::size_t first_number,
+                     const std::vector<std::size_t>& origin, std::vector<std::string>& notes)
+{
+  add_vertex_map<CGAL::IO::Color>(mesh, colour_name, soup.colours, file_numbers, first_number, origin,
+                                  [](const auto& c) { return CGAL::IO::Color(c[0], c[1], c[2], c[3]); });
+  add_vertex_map<Normal>(mesh, normal_name, point_normals(soup, path, notes), file_numbers, first_number, origin,
+                         [](const Normal& n) { return n; });
+}
+
+template <class Value>
+std::optional<Surface::Property_map<Surface::Vertex_index, Value>> vertex_map_of(const Surface& mesh, const char* name)
+{
+  const auto map = mesh.property_map<Surface::Vertex_index, Value>(name);
+  return map.second ? std::optional(map.first) : std::nullopt;
 }
 
 } // namespace
 
 std::optional<Colour_map> colours_of(const Surface& mesh)
 {
-  const auto colours = mesh.property_map<Surface::Vertex_index, CGAL::IO::Color>(colour_name);
-  return colours.second ? std::optional<Colour_map>(colours.first) : std::nullopt;
+  return vertex_map_of<CGAL::IO::Color>(mesh, colour_name);
+}
+
+std::optional<Normal_map> normals_of(const Surface& mesh)
+{
+  return vertex_map_of<Normal>(mesh, normal_name);
+}
+
+void remove_normals(Surface& mesh)
+{
+  if(std::optional<Normal_map> normals = normals_of(mesh))
+    mesh.remove_property_map(*normals);
+}
+
+Normal unit_or_zero(const Normal& v)
+{
+  const double scale = std::max({std::abs(v.x()), std::abs(v.y()), std::abs(v.z())});
+  if(!(scale > 0))
+    return CGAL::NULL_VECTOR;
+  const Normal scaled = v / scale;
+  return scaled / std::sqrt(scaled.squared_length());
 }
 
 void remove_colours(Surface& mesh)
@@ -267,6 +342,8 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
                     path + "': --repair reorders the faces they belong to");
   if(!soup.colours.empty() && repair)
     notes.push_back("ignored the vertex colours of '" + path + "': --repair merges and splits vertices");
+  if(!soup.normal_indices.empty() && repair)
+    notes.push_back("ignored the normals (vn) of '" + path + "': --repair merges and splits vertices");
   if(soup.number_of_faces() == 0)
     throw Input_error("'" + path + "' holds no faces");
   std::vector<Point> points;
@@ -287,7 +364,7 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     std::vector<std::size_t> origin; // the point of every vertex of the mesh
     Surface mesh = split_soup(points, polygons, path, notes, file_numbers, file_numbers_out, origin);
     add_texture_points(mesh, soup, polygons, origin);
-    add_colours(mesh, soup, file_numbers, first_number, origin);
+    add_vertex_data(mesh, soup, path, file_numbers, first_number, origin, notes);
     return mesh;
   }
   if(!manifold) {
@@ -307,7 +384,7 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     std::vector<std::size_t> origin(points.size());
     std::iota(origin.begin(), origin.end(), std::size_t(0));
     add_texture_points(mesh, soup, polygons, origin);
-    add_colours(mesh, soup, file_numbers, first_number, origin);
+    add_vertex_data(mesh, soup, path, file_numbers, first_number, origin, notes);
   }
   if(file_numbers_out)
     *file_numbers_out = std::move(file_numbers);

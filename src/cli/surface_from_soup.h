@@ -54,6 +54,24 @@ std::optional<Colour_map> colours_of(const Surface& mesh);
 /// removes them (for the options and outputs that cannot carry them)
 void remove_colours(Surface& mesh);
 
+/// the map the normals of an OBJ file (`vn`, referenced by every face:
+/// `f v//vn`, `f v/vt/vn`) are kept in, as vertex data: a vertex has the mean
+/// of the unit normals its corners reference (the same one, but for split
+/// normals), normalised; zero where they cancel out. Refinement carries it
+/// with the weights of the points (`CGAL::Subdiv::Carried_data::vertex_map`);
+/// `finish_normals` (surface.h) normalises the result.
+using Normal = Double_kernel::Vector_3;
+inline constexpr const char* normal_name = "v:normal";
+using Normal_map = Surface::Property_map<Surface::Vertex_index, Normal>;
+/// the vertex normals of `mesh`, if it has them
+std::optional<Normal_map> normals_of(const Surface& mesh);
+/// removes them (for the options and outputs that cannot carry them)
+void remove_normals(Surface& mesh);
+
+/// `v` scaled to length 1, computed on `v` divided by its largest component
+/// so that no square overflows: finite for any finite `v`; zero for zero
+Normal unit_or_zero(const Normal& v);
+
 /// what is done with a soup that is not a manifold polygon mesh
 enum class Soup_fix {
   none,              ///< nothing: it is refused, naming the face, edge or vertex at fault
@@ -75,8 +93,10 @@ enum class Soup_fix {
  * vertices. The texture coordinates of an OBJ file whose every face has
  * them go to the maps `texture_point_name` and `texture_index_name`
  * (not with `repair`, which reorders faces: a note says they were ignored),
- * and the vertex colours of a COFF or PLY file to the map `colour_name`
- * (not with `repair` either, which merges vertices).
+ * the vertex colours of a COFF or PLY file to the map `colour_name`
+ * and the normals of an OBJ file whose every face has them to the map
+ * `normal_name`, with a note when some vertex has split normals (not with
+ * `repair` either, which merges vertices).
  * \throws Input_error: no faces, or not a manifold polygon mesh (naming a
  *         face, an edge or a vertex: by its number in the file and its point)
  */

@@ -19,15 +19,17 @@ namespace SD = CGAL::Subdiv;
 
 using Run = std::function<void(Surface&, int, double)>;
 
-// the maps of `mesh` that refinement carries: the vertex colours, with the
-// weights of the points, and the texture coordinates with their seams, in
-// `face_varying` (an empty Carried_data costs nothing: subdivide then takes
-// its plain path)
+// the maps of `mesh` that refinement carries: the vertex colours and normals,
+// with the weights of the points, and the texture coordinates with their
+// seams, in `face_varying` (an empty Carried_data costs nothing: subdivide
+// then takes its plain path)
 SD::Carried_data<Surface, double> carried_maps(const Surface& mesh, SD::Face_varying_interpolation face_varying)
 {
   SD::Carried_data<Surface, double> carried;
   if(const std::optional<Colour_map> colours = colours_of(mesh))
     carried.vertex_map(*colours);
+  if(const std::optional<Normal_map> normals = normals_of(mesh))
+    carried.vertex_map(*normals);
   if(has_texture_points(mesh))
     carried.corner_map(mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first,
                        face_varying, mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first);
