@@ -637,6 +637,15 @@ subdiv_cli_test(surface_split_bowtie_corners ARGS surface ${SUBDIV_CLI_DIR}/bowt
   OUTPUT @WORK@/out.obj VERTICES 12 FACES 8
   FILE @WORK@/out.obj
   FILE_REGEX "\nt corner 1/1/0 [0-9]+ 10\nt corner 1/1/0 [0-9]+ 10\n$")
+# the texture coordinates of a split soup: the copies of a vertex on the
+# fan's non-manifold edges are one vertex whose values do not agree, so each
+# value is kept, as OpenSubdiv keeps every value of a non-manifold vertex
+# (Carried_data::non_manifold_copies): a value kept at level 1 gives (0.175,
+# 0.675) at level 2, and the crease value (0.1502, 0.3498) is gone
+subdiv_cli_test(surface_split_uv_non_manifold_copies ARGS surface ${SUBDIV_TEST_DATA_DIR}/opensubdiv/catmark_fan.obj
+  -o @WORK@/out.obj --scheme catmull-clark --levels 2 --split-non-manifold
+  OUTPUT @WORK@/out.obj VERTICES 275 FACES 208
+  FILE @WORK@/out.obj FILE_REGEX "\nvt 0\\.17499999[0-9]* 0\\.6749999[0-9]*\n" FILE_NOT_REGEX "vt 0\\.150195312")
 subdiv_cli_test(surface_split_manifold_input ARGS surface ${SUBDIV_CLI_DIR}/cube.off ${mesh_out}
   --scheme catmull-clark --levels 1 --split-non-manifold
   OUTPUT @WORK@/out.off VERTICES 26 FACES 24 STDERR_LINES 0)

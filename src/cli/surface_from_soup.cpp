@@ -322,6 +322,8 @@ bool has_texture_points(const Surface& mesh)
 
 void remove_texture_points(Surface& mesh)
 {
+  if(auto points = mesh.property_map<Surface::Vertex_index, std::size_t>(soup_point_name); points.second)
+    mesh.remove_property_map(points.first);
   if(auto values = mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name); values.second)
     mesh.remove_property_map(values.first);
   if(auto indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name); indices.second)
@@ -364,6 +366,11 @@ Surface surface_from_soup(const Mesh_soup& soup, const std::string& path, Mesh_f
     std::vector<std::size_t> origin; // the point of every vertex of the mesh
     Surface mesh = split_soup(points, polygons, path, notes, file_numbers, file_numbers_out, origin);
     add_texture_points(mesh, soup, polygons, origin);
+    if(has_texture_points(mesh)) {
+      auto point_of = mesh.add_property_map<Surface::Vertex_index, std::size_t>(soup_point_name).first;
+      for(const Surface::Vertex_index v : mesh.vertices())
+        point_of[v] = origin[v];
+    }
     add_vertex_data(mesh, soup, path, file_numbers, first_number, origin, notes);
     return mesh;
   }

@@ -36,6 +36,11 @@ inline constexpr const char* face_hole_name = "f:hole";
 using Texture_point = Double_kernel::Point_2;
 inline constexpr const char* texture_point_name = "h:uv";
 inline constexpr const char* texture_index_name = "h:uv_index";
+/// the map the point of the soup that each vertex copies is kept in, beside
+/// the texture coordinates of a split soup (`--split-non-manifold`): the
+/// copies of a point are one non-manifold vertex for them, as for OpenSubdiv
+/// (`CGAL::Subdiv::Carried_data::non_manifold_copies`)
+inline constexpr const char* soup_point_name = "v:soup_point";
 using Texture_point_map = Surface::Property_map<Surface::Halfedge_index, Texture_point>;
 using Texture_index_map = Surface::Property_map<Surface::Halfedge_index, std::size_t>;
 

@@ -30,10 +30,22 @@ SD::Carried_data<Surface, double> carried_maps(const Surface& mesh, SD::Face_var
     carried.vertex_map(*colours);
   if(const std::optional<Normal_map> normals = normals_of(mesh))
     carried.vertex_map(*normals);
-  if(has_texture_points(mesh))
+  if(has_texture_points(mesh)) {
     carried.corner_map(mesh.property_map<Surface::Halfedge_index, Texture_point>(texture_point_name).first,
                        face_varying, mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first);
+    // (a split soup: the copies of a point are one vertex for the UVs)
+    if(const auto point_of = mesh.property_map<Surface::Vertex_index, std::size_t>(soup_point_name); point_of.second)
+      carried.non_manifold_copies(point_of.first);
+  }
   return carried;
+}
+
+// the soup points of the vertices are those of the mesh before the levels
+// only: the refined mesh drops them (`carried_maps` read them)
+void drop_soup_points(Surface& mesh)
+{
+  if(auto point_of = mesh.property_map<Surface::Vertex_index, std::size_t>(soup_point_name); point_of.second)
+    mesh.remove_property_map(point_of.first);
 }
 
 template <class Wrapper>
@@ -43,6 +55,7 @@ Run call(Wrapper wrapper)
     // (texture coordinates take the path with tags, `run_sharp`)
     const auto carried = carried_maps(mesh, Sharp_options().face_varying);
     wrapper(mesh, SD::parameters::number_of_iterations(levels).max_memory(max_memory).carried_data(carried));
+    drop_soup_points(mesh);
   };
 }
 
@@ -77,6 +90,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
         SD::linear_subdivision(mesh, np);
       else
         SD::subdivide(mesh, mask_with_options<Mask>(options), np);
+      drop_soup_points(mesh);
     };
   return scheme;
 }
