@@ -136,9 +136,10 @@ public:
   using Vertex_writer = std::function<void(const std::vector<vertex_descriptor>&)>;
   /// a new face of a level, its parent and its vertices
   using New_face = internal::New_face<Mesh>;
-  /// after the rebuild: writes the value of one corner of a new face, given
-  /// its halfedge (into the corner's vertex) and its row in the level
-  using Corner_writer = std::function<void(halfedge_descriptor, std::size_t)>;
+  /// after the rebuild: writes the values of corners of new faces, a block
+  /// at a time, given their halfedges (into the corner's vertex) and their
+  /// rows in the level
+  using Corner_writer = std::function<void(const std::vector<halfedge_descriptor>&, const std::vector<std::size_t>&)>;
   /// where the corners of a level of a corner map take their values from
   using Face_varying_rows = internal::Face_varying_rows<Mesh, FT>;
   /// after the rebuild: writes the values of the new faces, given the parent (old face ordinal) of each
@@ -341,24 +342,39 @@ public:
       return result;
     }
 
-    // every corner of every new face, to every corner writer: corner i of a
-    // new face is the target of the halfedge from corner i - 1
+    // every corner of every new face, to every corner writer, in blocks (a
+    // writer is called once a block, not once a corner): corner i of a new
+    // face is the target of the halfedge from corner i - 1
     template <class New_level>
     void write_corners(const New_level& level)
     {
+      constexpr std::size_t block = 4096;
+      std::vector<halfedge_descriptor> halfedges;
+      halfedges.reserve(block);
+      std::vector<std::vector<std::size_t>> rows(m_corner_levels.size());
+      for(std::vector<std::size_t>& channel_rows : rows)
+        channel_rows.reserve(block);
+      const auto flush = [&]() {
+        for(std::size_t c = 0; c < m_corner_levels.size(); ++c) {
+          for(const Corner_writer& write : m_corner_levels[c].writers)
+            write(halfedges, rows[c]);
+          rows[c].clear();
+        }
+        halfedges.clear();
+      };
       const auto& record = level.faces();
       for(std::size_t b = 0; b < record.number_of_blocks(); ++b)
         record.for_each_face_in_block(b, [&](std::size_t, const auto* corners, std::size_t size, std::size_t parent) {
           for(std::size_t i = 0; i < size; ++i) {
-            const halfedge_descriptor h = level.halfedge(corners[i == 0 ? size - 1 : i - 1].halfedge);
+            halfedges.push_back(level.halfedge(corners[i == 0 ? size - 1 : i - 1].halfedge));
             const Vertex_origin& origin = m_new_origins[corners[i].vertex];
-            for(const Corner_level& channel : m_corner_levels) {
-              const std::size_t row = channel.rows.row_of(parent, origin);
-              for(const Corner_writer& write : channel.writers)
-                write(h, row);
-            }
+            for(std::size_t c = 0; c < m_corner_levels.size(); ++c)
+              rows[c].push_back(m_corner_levels[c].rows.row_of(parent, origin));
           }
+          if(halfedges.size() >= block)
+            flush();
         });
+      flush();
     }
 
     // the children of the pinned vertices of a channel are pinned (OpenSubdiv's
@@ -526,7 +542,11 @@ private:
         };
         values->push_back(internal::combine_values<Value>(value_of, row));
       };
-      const auto write = [map, values](halfedge_descriptor h, std::size_t row) { put(map, h, (*values)[row]); };
+      const auto write = [map, values](const std::vector<halfedge_descriptor>& halfedges,
+                                       const std::vector<std::size_t>& rows) {
+        for(std::size_t k = 0; k < halfedges.size(); ++k)
+          put(map, halfedges[k], (*values)[rows[k]]);
+      };
       return Corner_map_level{add_row, write};
     };
   }
@@ -550,7 +570,8 @@ private:
   static Corner_map_start row_map_level(LevelRows rows_of_level)
   {
     return [rows_of_level](const internal::Face_varying_topology<Mesh>& topology) {
-      return Corner_map_level{rows_of_level(topology), [](halfedge_descriptor, std::size_t) {}};
+      return Corner_map_level{rows_of_level(topology),
+                              [](const std::vector<halfedge_descriptor>&, const std::vector<std::size_t>&) {}};
     };
   }
 
@@ -560,8 +581,10 @@ private:
   static Corner_map_start index_map_level(IndexMap indices)
   {
     return [indices](const internal::Face_varying_topology<Mesh>&) {
-      const auto write = [indices](halfedge_descriptor h, std::size_t row) {
-        put(indices, h, static_cast<typename boost::property_traits<IndexMap>::value_type>(row));
+      const auto write = [indices](const std::vector<halfedge_descriptor>& halfedges,
+                                   const std::vector<std::size_t>& rows) {
+        for(std::size_t k = 0; k < halfedges.size(); ++k)
+          put(indices, halfedges[k], static_cast<typename boost::property_traits<IndexMap>::value_type>(rows[k]));
       };
       return Corner_map_level{nullptr, write};
     };
