@@ -21,7 +21,6 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
-#include <memory>
 #include <type_traits>
 
 namespace CGAL {
@@ -103,15 +102,15 @@ void face_varying_limit(const PolygonMesh& mesh, const Mask& mask, CornerMap val
   // the sharpness of the mesh's level, and so of the cut mesh
   const auto tags = internal::sharpness_tags_of<PolygonMesh, double>(np);
   const auto mesh_mask = mask.template rebind<PolygonMesh, double>();
-  std::unique_ptr<internal::Sharp_level<PolygonMesh, double>> level;
-  if constexpr(!std::is_same<std::decay_t<decltype(tags)>, internal::No_sharpness_tags>::value) {
-    tags.check(mesh, mesh_mask, "face_varying_limit (" + mesh_mask.name() + ")");
-    level = std::make_unique<internal::Sharp_level<PolygonMesh, double>>(
-      tags.level(mesh, internal::border_corners_of(mesh_mask)));
-  } else {
-    level = internal::untagged_level<PolygonMesh, double>(mesh, internal::border_corners_of(mesh_mask));
-  }
-  const internal::Sharpness_by_ordinal<double> sharpness = internal::cut_sharpness(topology, *level, mode);
+  const internal::Sharpness_by_ordinal<double> sharpness = [&]() {
+    if constexpr(!std::is_same<std::decay_t<decltype(tags)>, internal::No_sharpness_tags>::value) {
+      tags.check(mesh, mesh_mask, "face_varying_limit (" + mesh_mask.name() + ")");
+      return internal::cut_sharpness(topology, tags.level(mesh, internal::border_corners_of(mesh_mask)), mode);
+    } else {
+      return internal::cut_sharpness(
+        topology, internal::Untagged_level<PolygonMesh, double>(mesh, internal::border_corners_of(mesh_mask)), mode);
+    }
+  }();
 
   // the values as the points of the cut mesh, moved to their limit
   Cut cut = topology.cut();

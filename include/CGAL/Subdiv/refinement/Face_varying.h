@@ -28,7 +28,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -159,6 +158,10 @@ public:
   std::size_t edge_of(typename Cut::Edge_index e) const { return m_edge_of[e]; }
   /// the number of values at the vertex of cut vertex v
   int values_at_vertex(typename Cut::Vertex_index v) const { return m_values_at[m_vertex_of[v]]; }
+  /// the number of corners (faces) of cut vertex v
+  int faces_at(typename Cut::Vertex_index v) const { return m_faces_at[v]; }
+  /// whether cut vertex v is on a border of the cut mesh (a seam, or a border of the mesh)
+  bool is_on_cut_border(typename Cut::Vertex_index v) const { return m_cut.is_border(m_cut.halfedge(v)); }
   /// whether every value of the vertex of cut vertex v is kept where it is
   /// (a copy of a non-manifold vertex: `non_manifold_corners`)
   bool is_pinned(typename Cut::Vertex_index v) const { return !m_pinned.empty() && m_pinned[m_vertex_of[v]]; }
@@ -228,8 +231,10 @@ private:
           value = m_corner_of.size();
           m_corner_of.push_back(h);
           m_vertex_of.push_back(m_number(target(h, mesh)));
+          m_faces_at.push_back(0);
           ++m_values_at[m_vertex_of.back()];
         }
+        ++m_faces_at[value];
         m_value_of[m_number(h)] = Cut::Vertex_index(static_cast<Cut::size_type>(value));
       }
     m_first_equal.resize(m_corner_of.size());
@@ -420,6 +425,7 @@ private:
   std::vector<typename Cut::Vertex_index> m_value_of; // by halfedge ordinal (corners only)
   std::vector<halfedge_descriptor> m_corner_of;       // by cut vertex
   std::vector<std::size_t> m_vertex_of;               // by cut vertex
+  std::vector<int> m_faces_at;                        // by cut vertex
   std::vector<int> m_values_at;                       // by old vertex ordinal
   std::vector<std::size_t> m_first_equal;             // by cut vertex
   std::vector<std::size_t> m_value_starts;            // by old vertex ordinal, into m_values_of_vertex
@@ -473,19 +479,10 @@ std::vector<bool> non_manifold_corners(const Mesh& mesh, const PointOf& point_of
   return pinned;
 }
 
-/// the number of faces of cut vertex v (its sector)
-inline int faces_of(const Face_varying_cut_mesh& cut, typename Face_varying_cut_mesh::Vertex_index v)
-{
-  int faces = 0;
-  for(auto h : CGAL::halfedges_around_target(v, cut))
-    faces += CGAL::is_border(h, cut) ? 0 : 1;
-  return faces;
-}
-
 /// whether an edge inside the sector of cut vertex v (not a seam) has a
 /// sharpness in `tags` that passes `test`
-template <class Mesh, class FT, class Test>
-bool has_inner_edge(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+template <class Mesh, class Tags, class Test>
+bool has_inner_edge(const Face_varying_topology<Mesh>& topology, const Tags& tags,
                     typename Face_varying_cut_mesh::Vertex_index v, const Test& test)
 {
   const Face_varying_cut_mesh& cut = topology.cut();
@@ -497,29 +494,26 @@ bool has_inner_edge(const Face_varying_topology<Mesh>& topology, const Sharp_lev
 
 /// whether the sector of cut vertex v is "disjoint" as OpenSubdiv says: its
 /// value is also another sector's, or an edge inside it is infinitely sharp
-template <class Mesh, class FT>
-bool is_disjoint_sector(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+template <class Mesh, class Tags>
+bool is_disjoint_sector(const Face_varying_topology<Mesh>& topology, const Tags& tags,
                         typename Face_varying_cut_mesh::Vertex_index v)
 {
-  using Level = Sharp_level<Mesh, FT>;
   return topology.is_disjoint(v) ||
-         has_inner_edge(topology, tags, v, [](const typename Level::S& s) { return Level::Rules::is_infinite(s); });
+         has_inner_edge(topology, tags, v, [](const typename Tags::S& s) { return Tags::Rules::is_infinite(s); });
 }
 
 /// whether `mode` keeps cut vertex v of `topology` (with the level's
 /// sharpness `tags`) where it is (infinitely sharp); OpenSubdiv's
 /// `FVarLevel::completeTopologyFromFaceValues` rules
-template <class Mesh, class FT>
-bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mesh>& topology,
-                const Sharp_level<Mesh, FT>& tags, typename Face_varying_cut_mesh::Vertex_index v)
+template <class Mesh, class Tags>
+bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mesh>& topology, const Tags& tags,
+                typename Face_varying_cut_mesh::Vertex_index v)
 {
-  const Face_varying_cut_mesh& cut = topology.cut();
   if(topology.is_disjoint(v) || topology.is_pinned(v))
     return true;
-  const bool on_border = bool(CGAL::is_border(v, cut));
-  if(!on_border)
+  if(!topology.is_on_cut_border(v))
     return false;
-  const bool corner = faces_of(cut, v) == 1;
+  const bool corner = topology.faces_at(v) == 1;
   const int values = topology.values_at_vertex(v);
   // plus1 and plus2: a value's sharpness depends on the other's, when there
   // are two: both are kept if either is disjoint, or (plus2) a corner
@@ -529,7 +523,7 @@ bool is_kept_by(Face_varying_interpolation mode, const Face_varying_topology<Mes
     const auto [first, last] = topology.values_of_vertex(v);
     for(const std::size_t* w = first; w != last; ++w) {
       const typename Face_varying_cut_mesh::Vertex_index value(static_cast<std::uint32_t>(*w));
-      if((corners_too && faces_of(cut, value) == 1) || is_disjoint_sector(topology, tags, value))
+      if((corners_too && topology.faces_at(value) == 1) || is_disjoint_sector(topology, tags, value))
         return true;
     }
     return false;
@@ -617,8 +611,8 @@ Face_varying_rows<Mesh, FT> rows_of_cut(const Face_varying_topology<Mesh>& topol
  * weight: its vertex sharpness in `sharpness` is that weight (at most 1, so
  * that it too turns into a crease).
  */
-template <class Mesh, class FT>
-void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+template <class Mesh, class FT, class Tags>
+void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const Tags& tags,
                               Sharpness_by_ordinal<FT>& sharpness)
 {
   using Cut = Face_varying_cut_mesh;
@@ -660,8 +654,8 @@ void sharpen_dependent_values(const Face_varying_topology<Mesh>& topology, const
  * made infinitely sharp (a seam, a border of the cut mesh, is sharp by being
  * one). The refinement of a level and the face-varying limit both take it.
  */
-template <class Mesh, class FT>
-Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topology, const Sharp_level<Mesh, FT>& tags,
+template <class Mesh, class Tags, class FT = typename Tags::Field>
+Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topology, const Tags& tags,
                                        Face_varying_interpolation mode)
 {
   using Cut = Face_varying_cut_mesh;
@@ -680,13 +674,43 @@ Sharpness_by_ordinal<FT> cut_sharpness(const Face_varying_topology<Mesh>& topolo
   return result;
 }
 
-/// the tags of a level of `mesh` without sharpness tags: its pinned border
-/// corners only (`corners`)
+/*
+ * The sharpness of a level without tags, as `cut_sharpness` reads a
+ * `Sharp_level`'s: none, but at the border corners that `corners` pins. It
+ * is read at the vertices of the cut mesh only, so it reads no vertex of the
+ * mesh in advance, as a `Sharp_level` would (a level has millions).
+ */
 template <class Mesh, class FT>
-std::unique_ptr<Sharp_level<Mesh, FT>> untagged_level(const Mesh& mesh, Border_corners corners)
+class Untagged_level
 {
-  return std::make_unique<Sharp_level<Mesh, FT>>(
-    mesh, [](auto) { return 0; }, [](auto) { return 0; }, Crease_method::uniform, corners);
+public:
+  using Field = FT;
+  using S = typename Sharp_level<Mesh, FT>::S;
+  using Rules = typename Sharp_level<Mesh, FT>::Rules;
+
+  Untagged_level(const Mesh& mesh, Border_corners corners) : m_mesh(&mesh), m_number(mesh), m_corners(corners) {}
+
+  S edge_sharpness(std::size_t) const { return S(0); }
+  S vertex_sharpness(std::size_t i) const
+  {
+    return is_pinned_border_corner(*m_mesh, m_number.vertex(i), m_corners) ? Rules::infinite() : S(0);
+  }
+  Crease_method method() const { return Crease_method::uniform; }
+
+private:
+  const Mesh* m_mesh;
+  Mesh_numbering<Mesh> m_number;
+  Border_corners m_corners;
+};
+
+/// `make_rows(tags)` with the sharpness tags of `mask`'s level, or an
+/// `Untagged_level` of `mesh` if it has none
+template <class Mesh, class FT, class Mask, class MakeRows>
+auto with_level_tags(const Mesh& mesh, const Mask& mask, const MakeRows& make_rows)
+{
+  if(mask.sharp_level() != nullptr)
+    return make_rows(*mask.sharp_level());
+  return make_rows(Untagged_level<Mesh, FT>(mesh, border_corners_of(mask)));
 }
 
 /*
@@ -702,16 +726,13 @@ Face_varying_rows<Mesh, FT> smooth_face_varying_rows(const Face_varying_topology
                                                      const Face_varying_row_visitor<FT>& visit)
 {
   using Cut = Face_varying_cut_mesh;
-  // the mask's tags, or none
-  std::unique_ptr<Sharp_level<Mesh, FT>> untagged;
-  if(mask.sharp_level() == nullptr)
-    untagged = untagged_level<Mesh, FT>(topology.mesh(), border_corners_of(mask));
-  const Sharp_level<Mesh, FT>& tags = untagged ? *untagged : *mask.sharp_level();
-  const Sharpness_by_ordinal<FT> sharpness = cut_sharpness(topology, tags, mode);
-  const Sharp_level<Cut, FT> cut_level(
-    topology.cut(), [&](typename Cut::Edge_index e) { return sharpness.edges[e.idx()]; },
-    [&](typename Cut::Vertex_index v) { return sharpness.vertices[v.idx()]; }, tags.method(), Border_corners::smooth);
-  return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level), visit);
+  return with_level_tags<Mesh, FT>(topology.mesh(), mask, [&](const auto& tags) {
+    const Sharpness_by_ordinal<FT> sharpness = cut_sharpness(topology, tags, mode);
+    const Sharp_level<Cut, FT> cut_level(
+      topology.cut(), [&](typename Cut::Edge_index e) { return sharpness.edges[e.idx()]; },
+      [&](typename Cut::Vertex_index v) { return sharpness.vertices[v.idx()]; }, tags.method(), Border_corners::smooth);
+    return rows_of_cut<Mesh, FT>(topology, mask.template rebind<Cut, FT>().with_sharp_level(&cut_level), visit);
+  });
 }
 
 /// the rows of one level of a corner map whose topology is `topology`,

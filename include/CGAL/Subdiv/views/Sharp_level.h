@@ -33,6 +33,23 @@ namespace CGAL {
 namespace Subdiv {
 namespace internal {
 
+/// whether v is a border vertex with one face under `Border_corners::sharp`
+/// (OpenSubdiv's boundary interpolation "edges and corners"): infinitely sharp
+template <class Mesh>
+bool is_pinned_border_corner(const Mesh& mesh, typename boost::graph_traits<Mesh>::vertex_descriptor v,
+                             Border_corners corners)
+{
+  if(corners != Border_corners::sharp)
+    return false;
+  int edges = 0;
+  bool border = false;
+  for(const auto h : CGAL::halfedges_around_target(v, mesh)) {
+    ++edges;
+    border = border || CGAL::is_border(h, mesh);
+  }
+  return border && edges == 2;
+}
+
 /*
  * One level's sharpness, over the ordinals of `Mesh_numbering` (the hosts'
  * numbering, so new edge 2e + i of an edge split is the half of old edge e
@@ -42,6 +59,7 @@ template <class Mesh, class FT>
 class Sharp_level
 {
 public:
+  using Field = FT;
   using S = Sharpness_number<FT>;
   using Rules = Crease_rules<S>;
   using GT = boost::graph_traits<Mesh>;
@@ -91,7 +109,7 @@ public:
     m_vertex.reserve(vertex_count);
     for(std::size_t i = 0; i < vertex_count; ++i) {
       const vertex_descriptor v = m_number.vertex(i);
-      m_vertex.push_back(pinned_corner(v) ? Rules::infinite() : S(vertex_sharpness(v)));
+      m_vertex.push_back(is_pinned_border_corner(mesh, v, corners) ? Rules::infinite() : S(vertex_sharpness(v)));
     }
     m_child_half.assign(2 * edge_count, S(0));
     m_records.resize(vertex_count);
@@ -148,21 +166,6 @@ public:
   S child_vertex(std::size_t j) const { return j < m_vertex.size() ? Rules::decrement(m_vertex[j]) : S(0); }
 
 private:
-  // a border vertex with one face under `Border_corners::sharp` (OpenSubdiv's
-  // boundary interpolation "edges and corners") is infinitely sharp
-  bool pinned_corner(vertex_descriptor v) const
-  {
-    if(m_corners != Border_corners::sharp)
-      return false;
-    int edges = 0;
-    bool border = false;
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, *m_mesh)) {
-      ++edges;
-      border = border || CGAL::is_border(h, *m_mesh);
-    }
-    return border && edges == 2;
-  }
-
   // the half of the edge of h (into v) at v
   std::size_t half_at_target(halfedge_descriptor h) const
   {
