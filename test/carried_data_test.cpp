@@ -299,6 +299,42 @@ TEST(CarriedData, loop_face_and_vertex_provenance_are_exact)
   expect_provenance(loop_case());
 }
 
+// a writable non_manifold_copies map is kept through the levels: the child of
+// a vertex copies its parent's point, every other new vertex is a point of
+// its own, above all the others (face_varying_limit reads it on any level)
+TEST(CarriedData, non_manifold_copies_are_kept_through_the_levels)
+{
+  Mesh mesh = testing_utils::cube<Mesh>();
+  const auto point_of = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:point", 0).first;
+  for(const auto v : mesh.vertices())
+    point_of[v] = v.idx() / 2; // vertices 2k and 2k + 1 copy point k
+  S::Carried_data<Mesh, double> data;
+  data.non_manifold_copies(point_of);
+  std::vector<S::Vertex_origin> origins;
+  data.origins(origins);
+  std::vector<std::size_t> old_points;
+  for(int level = 1; level <= 2; ++level) {
+    old_points.clear();
+    for(const auto v : mesh.vertices())
+      old_points.push_back(point_of[v]);
+    const std::size_t first_new = *std::max_element(old_points.begin(), old_points.end()) + 1;
+    S::catmull_clark_subdivision(mesh, S::parameters::carried_data(data));
+    ASSERT_EQ(origins.size(), mesh.number_of_vertices());
+    std::set<std::size_t> fresh;
+    std::size_t j = 0;
+    for(const auto v : mesh.vertices()) {
+      const S::Vertex_origin& origin = origins[j++];
+      if(origin.kind == S::Origin_kind::vertex)
+        EXPECT_EQ(point_of[v], old_points[origin.index]);
+      else {
+        EXPECT_GE(point_of[v], first_new);
+        EXPECT_TRUE(fresh.insert(point_of[v]).second) << "point " << point_of[v] << " given twice";
+      }
+    }
+    EXPECT_EQ(fresh.size(), mesh.number_of_vertices() - old_points.size());
+  }
+}
+
 namespace {
 
 /*

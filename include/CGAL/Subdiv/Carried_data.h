@@ -98,7 +98,10 @@ enum class Interpolation {
  *   copies do not hold one value, every value at every copy is kept where it
  *   is (a corner), and so are the values of their children on the next levels
  *   (the maps of the mesh of the call are read on the first level a channel
- *   carries).
+ *   carries). If the map is writable, the new vertices get points too: the
+ *   child of a vertex its parent's, every other new vertex a point of its own
+ *   (above all the others), so that the map still says which vertices
+ *   descend from one non-manifold vertex (`face_varying_limit()` reads it so).
  * - `face_map(map)`: a face property map; every new face gets the value of the
  *   old face it lies in (for dual schemes, the faces made from an old edge or
  *   vertex get the value of an adjacent old face).
@@ -190,6 +193,11 @@ public:
   Carried_data& non_manifold_copies(VertexMap point_of)
   {
     m_point_of = [point_of](vertex_descriptor v) { return static_cast<std::size_t>(get(point_of, v)); };
+    using Category = typename boost::property_traits<VertexMap>::category;
+    if constexpr(std::is_convertible<Category, boost::writable_property_map_tag>::value) {
+      using Value = typename boost::property_traits<VertexMap>::value_type;
+      m_put_point = [point_of](vertex_descriptor v, std::size_t point) { put(point_of, v, static_cast<Value>(point)); };
+    }
     return *this;
   }
 
@@ -234,7 +242,7 @@ public:
   bool empty() const
   {
     return m_vertex_channels.empty() && m_corner_channels.empty() && m_face_channels.empty() && m_origins == nullptr &&
-           !wants_provenance();
+           !wants_provenance() && !m_put_point;
   }
 
 private:
@@ -263,7 +271,10 @@ public:
         m_stencils.read(host, mask, loop);
       if(m_data->interpolates(Interpolation::linear) || m_data->wants_provenance())
         m_linear_stencils.read(host, linear_mask(mask), loop);
-      if(m_data->m_origins != nullptr || m_data->wants_provenance() || !m_data->m_corner_channels.empty()) {
+      if(m_data->m_put_point)
+        read_points();
+      if(m_data->m_origins != nullptr || m_data->wants_provenance() || !m_data->m_corner_channels.empty() ||
+         m_data->m_put_point) {
         m_new_origins.clear();
         for(std::size_t j = 0; j < host.number_of_new_vertices(); ++j)
           m_new_origins.push_back(host.origin(j));
@@ -290,6 +301,8 @@ public:
         write_corners(level);
         pin_children(level.elements().vertices);
       }
+      if(m_data->m_put_point)
+        write_points(level.elements().vertices);
       if(m_vertex_writers.empty() && m_face_writers.empty())
         return;
       const auto& elements = level.elements();
@@ -394,6 +407,27 @@ public:
       }
     }
 
+    // the points of the non-manifold copies of the old vertices, by ordinal
+    void read_points()
+    {
+      m_old_points.clear();
+      for(const vertex_descriptor v : vertices(*m_mesh))
+        m_old_points.push_back(m_data->m_point_of(v));
+    }
+
+    // the child of a vertex copies its parent's point; a new vertex inside
+    // an edge or a face is a point of its own, above all the old ones
+    void write_points(const std::vector<vertex_descriptor>& new_vertices)
+    {
+      const std::size_t first_new =
+        m_old_points.empty() ? 0 : *std::max_element(m_old_points.begin(), m_old_points.end()) + 1;
+      for(std::size_t j = 0; j < new_vertices.size(); ++j) {
+        const Vertex_origin& origin = m_new_origins[j];
+        m_data->m_put_point(new_vertices[j],
+                            origin.kind == Origin_kind::vertex ? m_old_points[origin.index] : first_new + j);
+      }
+    }
+
     template <class Mask>
     void read_provenance(const Mask&)
     {
@@ -421,6 +455,7 @@ public:
     internal::Stencil_recorder<Mesh, FT> m_stencils;
     internal::Stencil_recorder<Mesh, FT> m_linear_stencils;
     std::vector<Vertex_origin> m_new_origins;
+    std::vector<std::size_t> m_old_points; // non_manifold_copies, by old vertex ordinal
     internal::Provenance_level<Mesh> m_provenance;
     std::vector<Vertex_writer> m_vertex_writers;
     std::vector<Corner_level> m_corner_levels;
@@ -603,7 +638,8 @@ private:
   std::vector<Corner_channel> m_corner_channels;
   std::vector<std::function<Face_writer(const Mesh&)>> m_face_channels;
   std::vector<Vertex_origin>* m_origins = nullptr;
-  std::function<std::size_t(vertex_descriptor)> m_point_of; // non_manifold_copies
+  std::function<std::size_t(vertex_descriptor)> m_point_of;        // non_manifold_copies
+  std::function<void(vertex_descriptor, std::size_t)> m_put_point; // the same, if it is writable
   mutable Provenance m_provenance;
 };
 

@@ -38,6 +38,8 @@ struct refined_mesh_t
 {};
 struct refined_corner_indices_t
 {};
+struct non_manifold_copies_t
+{};
 struct characteristic_map_t
 {};
 struct verify_limit_t
@@ -146,7 +148,10 @@ using CGAL::parameters::is_default_parameter;
  *  - boundary_interpolation: surfaces, OpenSubdiv's boundary modes
  *    (`Boundary_interpolation`; default edges only);
  *  - triangle_subdivision: Catmull-Clark, the edge rule next to triangles
- *    (`Triangle_subdivision`; default catmark).
+ *    (`Triangle_subdivision`; default catmark);
+ *  - non_manifold_copies: `face_varying_limit()`, a vertex property map giving
+ *    every vertex the point it copies, as `Carried_data::non_manifold_copies`
+ *    takes and keeps it.
  * Kept by reference (the chain holds a pointer to the argument):
  *  - carried_data: other vertex and face data to carry through the levels
  *    (`Carried_data`);
@@ -177,7 +182,8 @@ using CGAL::parameters::is_default_parameter;
   X(crease_method, internal::crease_method_t)                        \
   X(face_hole_map, internal::face_hole_map_t)                        \
   X(boundary_interpolation, internal::boundary_interpolation_t)      \
-  X(triangle_subdivision, internal::triangle_subdivision_t)
+  X(triangle_subdivision, internal::triangle_subdivision_t)          \
+  X(non_manifold_copies, internal::non_manifold_copies_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \
   X(carried_data, internal::carried_data_t, const)  \

@@ -22,6 +22,8 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Subdiv {
@@ -79,7 +81,11 @@ auto with_smooth_border_corners(const Mask& mask)
  * sharp; with `Face_varying_interpolation::all`, and with the linear masks
  * in every mode, every value is its own limit (linear in every face). Values
  * are 2D or 3D points or vectors of any kernel, computed in double. For
- * Loop, Catmull-Clark and the linear masks. \throws Bad_input where `project_to_limit()` does (a vertex the
+ * Loop, Catmull-Clark and the linear masks. With np `non_manifold_copies`
+ * (the map given to `Carried_data::non_manifold_copies`, which keeps it
+ * through the levels), the copies of one non-manifold vertex whose corners
+ * do not all hold one value keep their values, as OpenSubdiv's limit keeps
+ * them. \throws Bad_input where `project_to_limit()` does (a vertex the
  * analysis does not cover, such as an interior triangle vertex of valence 2).
  */
 template <class PolygonMesh, class Mask, class CornerMap, class IndexMap, class LimitMap,
@@ -96,8 +102,15 @@ void face_varying_limit(const PolygonMesh& mesh, const Mask& mask, CornerMap val
         put(limit, h, internal::cut_point_as_value<Value>(internal::value_as_cut_point(get(values, h))));
     return;
   }
-  const internal::Face_varying_topology<PolygonMesh> topology(
-    mesh, [&](halfedge_descriptor a, halfedge_descriptor b) { return get(indices, a) == get(indices, b); });
+  const auto same = [&](halfedge_descriptor a, halfedge_descriptor b) { return get(indices, a) == get(indices, b); };
+  // the copies of a non-manifold vertex whose corners disagree keep their values
+  std::vector<bool> pinned;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal::non_manifold_copies_t>::value) {
+    const auto point_of = parameters::get_parameter(np, internal::non_manifold_copies_t());
+    pinned = internal::non_manifold_corners(
+      mesh, [&](auto v) { return static_cast<std::size_t>(get(point_of, v)); }, same);
+  }
+  const internal::Face_varying_topology<PolygonMesh> topology(mesh, same, false, std::move(pinned));
 
   // the sharpness of the mesh's level, and so of the cut mesh
   const auto tags = internal::sharpness_tags_of<PolygonMesh, double>(np);
