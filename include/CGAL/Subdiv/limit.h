@@ -5,11 +5,13 @@
 
 /// \file limit.h
 /// Convenience header of the limit surface: limit positions and normals,
-/// displacement, limit stencil tables (they use the analysis' masks).
+/// displacement, limit stencil tables (they use the analysis' masks), and the
+/// bases of the regular patches.
 
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
 #include <CGAL/Subdiv/limit/face_varying_limit.h>
 #include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
+#include <CGAL/Subdiv/limit/patch_basis.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 
 #endif // CGAL_SUBDIV_LIMIT_H
