@@ -9,6 +9,7 @@
 /// bases of the regular patches.
 
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
+#include <CGAL/Subdiv/limit/Limit_surface.h>
 #include <CGAL/Subdiv/limit/face_varying_limit.h>
 #include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
 #include <CGAL/Subdiv/limit/patch_basis.h>

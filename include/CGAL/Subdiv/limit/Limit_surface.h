@@ -1,0 +1,410 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_LIMIT_LIMIT_SURFACE_H
+#define CGAL_SUBDIV_LIMIT_LIMIT_SURFACE_H
+
+/// \file Limit_surface.h
+/// The limit surface of Catmull-Clark anywhere: the position, first and
+/// second derivatives and the normal at any (face, u, v), by local
+/// refinement down to a regular patch, evaluated as a bicubic B-spline.
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv/Carried_data.h>
+#include <CGAL/Subdiv/errors.h>
+#include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/limit/patch_basis.h>
+#include <CGAL/Subdiv/limit/project_to_limit.h>
+#include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/subdivide.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * The limit surface at one parameter: the position, its partial derivatives
+ * along the face's u and v (first and second), and the unit normal.
+ */
+struct Limit_sample
+{
+  using Point = CGAL::Simple_cartesian<double>::Point_3;
+  using Vector = CGAL::Simple_cartesian<double>::Vector_3;
+  Point position = CGAL::ORIGIN;
+  Vector du = CGAL::NULL_VECTOR, dv = CGAL::NULL_VECTOR;
+  Vector duu = CGAL::NULL_VECTOR, duv = CGAL::NULL_VECTOR, dvv = CGAL::NULL_VECTOR;
+  Vector normal = CGAL::NULL_VECTOR;
+};
+
+/*!
+ * \ingroup PkgSubdivAnalysis
+ * Evaluates the Catmull-Clark limit surface of a closed mesh at any
+ * parameter of any face (the first slice of issue 13: no border and no
+ * sharpness tag yet; both are refused).
+ *
+ * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
+ * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
+ * corner 3 at (0,1); a face with n != 4 corners is addressed as n sub-quads
+ * (face, corner c, u, v): (0,0) at corner c, u towards the midpoint of the
+ * edge from corner c to corner c+1, v towards the midpoint of the edge from
+ * corner c-1 to corner c, (1,1) at the face point.
+ *
+ * Method: a quad whose four corners have valence 4 (and only quads around
+ * them) is a regular patch, evaluated exactly as the bicubic B-spline of its
+ * 16 control points (`bspline_patch_weights()`). Any other face is refined
+ * locally (its 1-ring, with the library's own `subdivide()`, in the mesh's
+ * number type) and the child that holds (u, v) is evaluated in turn: every
+ * child away from an extraordinary vertex is regular after one level, and a
+ * parameter at distance d from the extraordinary corner is reached after
+ * about log2(1/d) levels. So the evaluation is exact in an exact kernel (up
+ * to the final conversion to double) at every parameter but an extraordinary
+ * vertex itself, where the position is the limit mask of the analysis
+ * (`project_to_limit()`), the normal its tangent masks' (`limit_normals()`),
+ * and the derivatives, which the parameterisation does not have there, are
+ * zero. A parameter closer than 2^-`max_depth` to an extraordinary corner is
+ * evaluated at that corner (the surface moves by about
+ * lambda^`max_depth` times the patch's size there, lambda < 0.65 the
+ * subdominant eigenvalue).
+ */
+template <class PolygonMesh>
+class Limit_surface
+{
+  using GT = boost::graph_traits<PolygonMesh>;
+  using face_descriptor = typename GT::face_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using Vpm = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::const_type;
+  using Point = typename boost::property_traits<Vpm>::value_type;
+  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
+  using FT = typename Kernel::FT;
+  using Vector = typename Kernel::Vector_3;
+  // the local patches: a face and its 1-ring, refined level by level
+  using Patch_mesh = CGAL::Surface_mesh<Point>;
+  using Patch_halfedge = typename Patch_mesh::Halfedge_index;
+
+public:
+  /// levels of local refinement at most before a parameter is taken at its extraordinary corner
+  int max_depth = 60;
+
+  /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged);
+  /// \throws Bad_input if `mesh` has a border (not supported yet)
+  explicit Limit_surface(const PolygonMesh& mesh) : m_mesh(&mesh)
+  {
+    for(const halfedge_descriptor h : halfedges(mesh))
+      if(CGAL::is_border(h, mesh))
+        internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
+                                             << ordinal_of(target(h, mesh)) << "): not supported yet");
+  }
+
+  /// the limit surface at (u, v) of quad `f`; \throws Bad_input if `f` is not a quad or (u, v) is not in [0, 1]^2
+  Limit_sample evaluate(face_descriptor f, double u, double v) const
+  {
+    check_parameters(u, v);
+    const int corners = degree_of(f);
+    if(corners != 4)
+      internal::refuse(internal::Message()
+                       << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
+                       << corners << " sub-quads (face, corner, u, v)");
+    return to_sample(evaluate_quad(local_patch(*m_mesh, f), FT(u), FT(v), 0));
+  }
+
+  /// the limit surface at (u, v) of the sub-quad at `corner` of face `f` (n != 4 corners)
+  Limit_sample evaluate(face_descriptor f, int corner, double u, double v) const
+  {
+    check_parameters(u, v);
+    const int corners = degree_of(f);
+    if(corners == 4)
+      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f)
+                                           << " is a quad: address it as (face, u, v), without a corner");
+    if(corner < 0 || corner >= corners)
+      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner
+                                           << " (it has " << corners << ")");
+    // one level makes the sub-quad a quad of its own, with the same (u, v)
+    Patch patch = local_patch(*m_mesh, f);
+    const Child child = refine_and_find(patch, [&](const Face_origin& origin) { return origin.sub_quad == corner; });
+    return to_sample(evaluate_quad(local_patch(child.mesh, child.face_h0), FT(u), FT(v), 1));
+  }
+
+private:
+  // a face of a small mesh, with the halfedge whose target is its corner 0
+  struct Patch
+  {
+    Patch_mesh mesh;
+    Patch_halfedge h0;
+  };
+  // the position and derivatives, in the mesh's number type
+  struct Exact_sample
+  {
+    Point position;
+    Vector du, dv, duu, duv, dvv;
+    bool at_extraordinary_vertex = false;
+    Vector normal; // at an extraordinary vertex only
+  };
+  struct Child
+  {
+    Patch_mesh mesh;
+    Patch_halfedge face_h0;
+  };
+
+  template <class Element>
+  std::size_t ordinal_of(Element e) const
+  {
+    return internal::Mesh_numbering<PolygonMesh>(*m_mesh)(e);
+  }
+
+  static void check_parameters(double u, double v)
+  {
+    if(!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
+      internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
+                                           << std::to_string(v) << ") is not in the face's domain [0, 1]^2");
+  }
+
+  int degree_of(face_descriptor f) const
+  {
+    return static_cast<int>(CGAL::halfedges_around_face(halfedge(f, *m_mesh), *m_mesh).size());
+  }
+
+  /*
+   * The patch of face f of `source` (a copy of f and of every face that
+   * shares a vertex with it, f first), its corner 0 at the target of
+   * halfedge(f, source). Outside f's corners the patch has a border of its
+   * own: the elements that a refinement makes there are never read.
+   */
+  template <class Source>
+  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::face_descriptor f)
+  {
+    return local_patch(mesh, halfedge(f, mesh));
+  }
+
+  template <class Source>
+  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0)
+  {
+    using Source_face = typename boost::graph_traits<Source>::face_descriptor;
+    using Source_vertex = typename boost::graph_traits<Source>::vertex_descriptor;
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    const Source_face f = face(h0, mesh);
+    std::vector<Source_face> ring{f};
+    for(const auto corner : CGAL::vertices_around_face(h0, mesh))
+      for(const Source_face g : CGAL::faces_around_target(halfedge(corner, mesh), mesh))
+        if(g != boost::graph_traits<Source>::null_face() && std::find(ring.begin(), ring.end(), g) == ring.end())
+          ring.push_back(g);
+    Patch patch;
+    std::map<Source_vertex, typename Patch_mesh::Vertex_index> copy;
+    std::vector<typename Patch_mesh::Vertex_index> corners;
+    for(const Source_face g : ring) {
+      corners.clear();
+      for(const Source_vertex w : CGAL::vertices_around_face(halfedge(g, mesh), mesh)) {
+        auto [it, fresh] = copy.emplace(w, typename Patch_mesh::Vertex_index());
+        if(fresh)
+          it->second = patch.mesh.add_vertex(get(vpm, w));
+        corners.push_back(it->second);
+      }
+      if(patch.mesh.add_face(corners) == Patch_mesh::null_face())
+        internal::refuse(internal::Message()
+                         << "Limit_surface: the faces around a face do not make a disk (a non-manifold neighbourhood)");
+    }
+    [[maybe_unused]] const auto [h, found] =
+      CGAL::halfedge(copy.at(source(h0, mesh)), copy.at(target(h0, mesh)), patch.mesh);
+    CGAL_assertion(found && patch.mesh.face(h) == typename Patch_mesh::Face_index(0));
+    patch.h0 = h;
+    // the domain of the face's children (Face_origin) starts at the target of its halfedge
+    patch.mesh.set_halfedge(patch.mesh.face(h), h);
+    return patch;
+  }
+
+  // whether the face of h0 and the faces around its corners are quads of valence 4 inside
+  static bool is_regular(const Patch& patch)
+  {
+    const Patch_mesh& mesh = patch.mesh;
+    for(const Patch_halfedge h : CGAL::halfedges_around_face(patch.h0, mesh)) {
+      const auto corner = mesh.target(h);
+      if(mesh.degree(corner) != 4 || mesh.is_border(corner))
+        return false;
+      for(const auto g : CGAL::faces_around_target(h, mesh))
+        if(mesh.degree(g) != 4)
+          return false;
+    }
+    return true;
+  }
+
+  /*
+   * The 16 control points of a regular quad, numbered as
+   * `bspline_patch_weights()` takes them (point 4 r + c in row r along v,
+   * column c along u; corner i of the face at 5, 6, 10, 9). Across the edge
+   * from corner i to corner i+1 lie the neighbours of both, and the diagonal
+   * neighbour of corner i is the far corner of the face beyond.
+   */
+  static std::array<Point, 16> control_points(const Patch& patch)
+  {
+    const Patch_mesh& m = patch.mesh;
+    std::array<Patch_halfedge, 4> h;
+    h[0] = patch.h0;
+    for(int i = 1; i < 4; ++i)
+      h[i] = m.next(h[i - 1]);
+    // by corner i: its point, the neighbour across the edge to corner i+1
+    // (next to corner i, then to corner i+1), and its diagonal neighbour
+    static const int corner_point[4] = {5, 6, 10, 9};
+    static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
+    static const int diagonal[4] = {0, 3, 15, 12};
+    std::array<Point, 16> points;
+    for(int i = 0; i < 4; ++i) {
+      const Patch_halfedge out = h[(i + 1) % 4]; // from corner i to corner i+1
+      const Patch_halfedge beyond = m.opposite(out);
+      points[corner_point[i]] = m.point(m.target(h[i]));
+      points[across[i][0]] = m.point(m.target(m.next(beyond)));
+      points[across[i][1]] = m.point(m.target(m.next(m.next(beyond))));
+      points[diagonal[i]] = m.point(m.source(m.prev(m.opposite(m.next(beyond)))));
+    }
+    return points;
+  }
+
+  static Exact_sample evaluate_regular(const Patch& patch, const FT& u, const FT& v)
+  {
+    const std::array<Point, 16> points = control_points(patch);
+    const Patch_weights<FT, 16> w = bspline_patch_weights(u, v);
+    const auto combine = [&](const std::array<FT, 16>& weights) {
+      Vector sum = CGAL::NULL_VECTOR;
+      for(std::size_t k = 0; k < 16; ++k)
+        sum = sum + (points[k] - CGAL::ORIGIN) * weights[k];
+      return sum;
+    };
+    Exact_sample s;
+    s.position = CGAL::ORIGIN + combine(w.position);
+    s.du = combine(w.du);
+    s.dv = combine(w.dv);
+    s.duu = combine(w.duu);
+    s.duv = combine(w.duv);
+    s.dvv = combine(w.dvv);
+    return s;
+  }
+
+  // the corner of the patch's face at (u, v), if (u, v) is a corner
+  static int corner_at(const FT& u, const FT& v)
+  {
+    const bool u0 = u == FT(0), u1 = u == FT(1), v0 = v == FT(0), v1 = v == FT(1);
+    return u0 && v0 ? 0 : u1 && v0 ? 1 : u1 && v1 ? 2 : u0 && v1 ? 3 : -1;
+  }
+
+  // the limit position and normal of corner i of the patch's face (the masks of the analysis)
+  static Exact_sample evaluate_at_corner(Patch patch, int i)
+  {
+    Patch_halfedge h = patch.h0;
+    for(int k = 0; k < i; ++k)
+      h = patch.mesh.next(h);
+    const auto corner = patch.mesh.target(h);
+    Exact_sample s;
+    s.du = s.dv = s.duu = s.duv = s.dvv = CGAL::NULL_VECTOR;
+    s.at_extraordinary_vertex = true;
+    const auto normals = patch.mesh
+                           .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
+                             "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
+                           .first;
+    limit_normals(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>(), normals);
+    s.normal = normals[corner];
+    project_to_limit(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>());
+    s.position = patch.mesh.point(corner);
+    return s;
+  }
+
+  /*
+   * Refines the patch one level and returns the child of its face (face 0)
+   * for which `pick(origin)` holds, with the halfedge whose target is the
+   * child's corner at the (min, min) of its box: its corner 0, as the child's
+   * (u, v) runs along the parent's.
+   */
+  template <class Pick>
+  static Child refine_and_find(Patch& patch, const Pick& pick)
+  {
+    auto origins =
+      patch.mesh.template add_property_map<typename Patch_mesh::Face_index, Face_origin>("f:cgal_subdiv_limit_origin")
+        .first;
+    Carried_data<Patch_mesh, FT> data;
+    data.face_origin_map(origins);
+    subdivide(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>(), parameters::carried_data(data));
+    for(const auto g : patch.mesh.faces()) {
+      const Face_origin& origin = origins[g];
+      if(origin.face != 0 || !pick(origin))
+        continue;
+      const CGAL::Bbox_2 box = origin.box();
+      Patch_halfedge h = patch.mesh.halfedge(g);
+      for(int i = 0; i < origin.corners; ++i, h = patch.mesh.next(h))
+        if(origin.uv[i][0] == box.xmin() && origin.uv[i][1] == box.ymin())
+          return Child{std::move(patch.mesh), h};
+    }
+    internal::refuse(internal::Message() << "Limit_surface: no child holds the parameter (an internal error)");
+    return Child{};
+  }
+
+  // the limit at (u, v) of the patch's quad, `depth` levels below the mesh
+  Exact_sample evaluate_quad(Patch patch, const FT& u, const FT& v, int depth) const
+  {
+    if(is_regular(patch))
+      return evaluate_regular(patch, u, v);
+    const int corner = corner_at(u, v);
+    if(corner >= 0 || depth >= max_depth)
+      return evaluate_at_corner(std::move(patch), corner >= 0 ? corner : nearest_corner(u, v));
+    // the child that holds (u, v): the quarter [a, a + 1/2] x [b, b + 1/2]
+    // (its box's bounds are dyadic, exact in double)
+    const FT half = FT(1) / FT(2);
+    const FT a = u < half ? FT(0) : half, b = v < half ? FT(0) : half;
+    const double box_u = CGAL::to_double(a), box_v = CGAL::to_double(b);
+    const Child child = refine_and_find(patch, [&](const Face_origin& origin) {
+      const CGAL::Bbox_2 box = origin.box();
+      return box.xmin() == box_u && box.ymin() == box_v;
+    });
+    Exact_sample s = evaluate_quad(local_patch(child.mesh, child.face_h0), FT(2) * (u - a), FT(2) * (v - b), depth + 1);
+    // d/du = 2 d/du' in the child's parameters
+    s.du = s.du * FT(2);
+    s.dv = s.dv * FT(2);
+    s.duu = s.duu * FT(4);
+    s.duv = s.duv * FT(4);
+    s.dvv = s.dvv * FT(4);
+    return s;
+  }
+
+  static int nearest_corner(const FT& u, const FT& v)
+  {
+    const FT half = FT(1) / FT(2);
+    return u < half ? (v < half ? 0 : 3) : (v < half ? 1 : 2);
+  }
+
+  static Limit_sample to_sample(const Exact_sample& s)
+  {
+    const auto vector = [](const Vector& w) {
+      return Limit_sample::Vector(CGAL::to_double(w.x()), CGAL::to_double(w.y()), CGAL::to_double(w.z()));
+    };
+    Limit_sample out;
+    out.position = Limit_sample::Point(CGAL::to_double(s.position.x()), CGAL::to_double(s.position.y()),
+                                       CGAL::to_double(s.position.z()));
+    out.du = vector(s.du);
+    out.dv = vector(s.dv);
+    out.duu = vector(s.duu);
+    out.duv = vector(s.duv);
+    out.dvv = vector(s.dvv);
+    const Limit_sample::Vector n = s.at_extraordinary_vertex ? vector(s.normal) : CGAL::cross_product(out.du, out.dv);
+    const double length = std::sqrt(n.squared_length());
+    out.normal = length > 0 ? n / length : n;
+    return out;
+  }
+
+  const PolygonMesh* m_mesh;
+};
+
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_LIMIT_LIMIT_SURFACE_H

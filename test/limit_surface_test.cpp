@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+// Limit_surface: the Catmull-Clark limit at any (face, u, v), against the
+// library's refinement and limit masks (another path: global refinement,
+// then the limit masks of the analysis at the vertex that sits at the
+// parameter), exactly; derivatives against differences of positions; bad
+// parameters refused.
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Subdiv.h>
+#include <CGAL/Subdiv/limit/Limit_surface.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include "mesh_builders.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace S = CGAL::Subdiv;
+using KE = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using Exact_mesh = CGAL::Surface_mesh<KE::Point_3>;
+using K = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+namespace {
+
+S::Limit_sample::Point to_double(const KE::Point_3& p)
+{
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
+S::Limit_sample::Vector unit(const KE::Vector_3& n)
+{
+  const S::Limit_sample::Vector d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+  return d / std::sqrt(d.squared_length());
+}
+
+/*
+ * Every vertex of `base` refined `levels` levels sits at a parameter of the
+ * base faces around it (face_origin_map): there the evaluator's position is
+ * the exact limit of that vertex (project_to_limit), converted to double,
+ * bit for bit, and its normal the limit normal's direction (limit_normals).
+ */
+void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels)
+{
+  const S::Limit_surface<Exact_mesh> surface(base);
+  Exact_mesh refined = base;
+  const auto origin = refined.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  S::Carried_data<Exact_mesh> data;
+  data.face_origin_map(origin);
+  S::catmull_clark_subdivision(refined, S::parameters::number_of_iterations(levels).carried_data(data));
+  const auto normal = refined.add_property_map<Exact_mesh::Vertex_index, KE::Vector_3>("v:normal").first;
+  S::limit_normals(refined, S::Catmull_clark_mask<Exact_mesh>(), normal);
+  Exact_mesh limit = refined;
+  S::project_to_limit(limit, S::Catmull_clark_mask<Exact_mesh>());
+
+  std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
+  std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done; // (base face, vertex)
+  std::size_t checked = 0, extraordinary = 0;
+  for(const auto f : refined.faces()) {
+    const S::Face_origin& o = origin[f];
+    int i = 0;
+    for(const auto h : CGAL::halfedges_around_face(refined.halfedge(f), refined)) {
+      const auto v = refined.target(h);
+      const auto [u, w] = std::make_pair(o.uv[i][0], o.uv[i][1]);
+      ++i;
+      if(!done.emplace(std::make_pair(o.face, v), true).second)
+        continue;
+      SCOPED_TRACE("base face " + std::to_string(o.face) + " sub-quad " + std::to_string(o.sub_quad) + " (u, v) = (" +
+                   std::to_string(u) + ", " + std::to_string(w) + ")");
+      const S::Limit_sample s = o.sub_quad < 0 ? surface.evaluate(base_faces[o.face], u, w)
+                                               : surface.evaluate(base_faces[o.face], o.sub_quad, u, w);
+      EXPECT_EQ(s.position, to_double(limit.point(v)));
+      const S::Limit_sample::Vector expected = unit(normal[v]);
+      EXPECT_NEAR((s.normal - expected).squared_length(), 0, 1e-24);
+      extraordinary += refined.degree(v) != 4 ? 1 : 0;
+      ++checked;
+    }
+  }
+  EXPECT_GT(extraordinary, 0u);
+  EXPECT_GT(checked, refined.number_of_vertices()); // the vertices on base edges, from both faces
+}
+
+} // namespace
+
+TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_on_a_box_of_quads_and_triangles)
+{
+  expect_limit_of_refined_vertices(testing_utils::mixed_box<Exact_mesh>(), 2);
+}
+
+TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_on_a_prism)
+{
+  expect_limit_of_refined_vertices(testing_utils::prism<Exact_mesh>(5), 2);
+}
+
+// one level of the prism makes vertices of valence 3, 4 and 5 and only
+// quads: parameters two levels deep, near each kind of extraordinary corner
+TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_near_valence_5)
+{
+  Exact_mesh mesh = testing_utils::prism<Exact_mesh>(5);
+  S::catmull_clark_subdivision(mesh, S::parameters::number_of_iterations(1));
+  expect_limit_of_refined_vertices(mesh, 2);
+}
+
+// the derivatives of the position, at parameters away from the corners (in
+// double), against central differences
+TEST(LimitSurface, derivatives_agree_with_differences_of_positions)
+{
+  Mesh mesh = testing_utils::prism<Mesh>(5);
+  S::catmull_clark_subdivision(mesh, S::parameters::number_of_iterations(1));
+  const S::Limit_surface<Mesh> surface(mesh);
+  const double h = 1e-5;
+  int faces = 0;
+  for(const auto f : mesh.faces()) {
+    if(++faces > 12)
+      break;
+    for(const auto& [u, v] : std::vector<std::pair<double, double>>{{0.3, 0.6}, {0.05, 0.1}, {0.81, 0.27}}) {
+      const S::Limit_sample s = surface.evaluate(f, u, v);
+      const auto du = (surface.evaluate(f, u + h, v).position - surface.evaluate(f, u - h, v).position) / (2 * h);
+      const auto dv = (surface.evaluate(f, u, v + h).position - surface.evaluate(f, u, v - h).position) / (2 * h);
+      const auto duu = (surface.evaluate(f, u + h, v).du - surface.evaluate(f, u - h, v).du) / (2 * h);
+      const auto duv = (surface.evaluate(f, u, v + h).du - surface.evaluate(f, u, v - h).du) / (2 * h);
+      const auto dvv = (surface.evaluate(f, u, v + h).dv - surface.evaluate(f, u, v - h).dv) / (2 * h);
+      const double scale = 1 + std::sqrt(s.du.squared_length() + s.dv.squared_length());
+      EXPECT_LT(std::sqrt((du - s.du).squared_length()), 1e-6 * scale);
+      EXPECT_LT(std::sqrt((dv - s.dv).squared_length()), 1e-6 * scale);
+      EXPECT_LT(std::sqrt((duu - s.duu).squared_length()), 1e-4 * scale);
+      EXPECT_LT(std::sqrt((duv - s.duv).squared_length()), 1e-4 * scale);
+      EXPECT_LT(std::sqrt((dvv - s.dvv).squared_length()), 1e-4 * scale);
+      EXPECT_NEAR(s.normal.squared_length(), 1, 1e-12);
+      EXPECT_NEAR(s.normal * s.du, 0, 1e-9 * std::sqrt(s.du.squared_length()));
+    }
+  }
+}
+
+TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
+{
+  const Mesh box = testing_utils::mixed_box<Mesh>();
+  const S::Limit_surface<Mesh> surface(box);
+  const auto quad = *box.faces().begin(); // {0, 2, 3, 1}
+  const auto triangle = *std::next(box.faces().begin());
+  const auto expect_refusal = [](const auto& call, const std::string& words) {
+    try {
+      call();
+      ADD_FAILURE() << "not refused: " << words;
+    } catch(const S::Bad_input& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  expect_refusal([&] { surface.evaluate(quad, 1.5, 0.5); }, "not in the face's domain");
+  expect_refusal([&] { surface.evaluate(quad, 0.5, std::nan("")); }, "not in the face's domain");
+  expect_refusal([&] { surface.evaluate(triangle, 0.5, 0.5); }, "face 1 has 3 corners");
+  expect_refusal([&] { surface.evaluate(quad, 0, 0.5, 0.5); }, "face 0 is a quad");
+  expect_refusal([&] { surface.evaluate(triangle, 3, 0.5, 0.5); }, "face 1 has no corner 3");
+  const Mesh open = testing_utils::open_fan<Mesh>(4);
+  expect_refusal([&] { S::Limit_surface<Mesh> border(open); }, "has a border");
+}
