@@ -19,6 +19,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -47,18 +48,19 @@ S::Limit_sample::Vector unit(const KE::Vector_3& n)
  * the exact limit of that vertex (project_to_limit), converted to double,
  * bit for bit, and its normal the limit normal's direction (limit_normals).
  */
-void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels)
+template <class Mask = S::Catmull_clark_mask<Exact_mesh>>
+void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const Mask& mask = Mask())
 {
-  const S::Limit_surface<Exact_mesh> surface(base);
+  const S::Limit_surface<Exact_mesh, Mask> surface(base, mask);
   Exact_mesh refined = base;
   const auto origin = refined.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
   S::Carried_data<Exact_mesh> data;
   data.face_origin_map(origin);
-  S::catmull_clark_subdivision(refined, S::parameters::number_of_iterations(levels).carried_data(data));
+  S::subdivide(refined, mask, S::parameters::number_of_iterations(levels).carried_data(data));
   const auto normal = refined.add_property_map<Exact_mesh::Vertex_index, KE::Vector_3>("v:normal").first;
-  S::limit_normals(refined, S::Catmull_clark_mask<Exact_mesh>(), normal);
+  S::limit_normals(refined, mask, normal);
   Exact_mesh limit = refined;
-  S::project_to_limit(limit, S::Catmull_clark_mask<Exact_mesh>());
+  S::project_to_limit(limit, mask);
 
   std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
   std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done; // (base face, vertex)
@@ -74,12 +76,16 @@ void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels)
         continue;
       SCOPED_TRACE("base face " + std::to_string(o.face) + " sub-quad " + std::to_string(o.sub_quad) + " (u, v) = (" +
                    std::to_string(u) + ", " + std::to_string(w) + ")");
-      const S::Limit_sample s = o.sub_quad < 0 ? surface.evaluate(base_faces[o.face], u, w)
-                                               : surface.evaluate(base_faces[o.face], o.sub_quad, u, w);
+      S::Limit_sample s;
+      if constexpr(std::is_same<Mask, S::Catmull_clark_mask<Exact_mesh>>::value)
+        s = o.sub_quad < 0 ? surface.evaluate(base_faces[o.face], u, w)
+                           : surface.evaluate(base_faces[o.face], o.sub_quad, u, w);
+      else
+        s = surface.evaluate(base_faces[o.face], u, w);
       EXPECT_EQ(s.position, to_double(limit.point(v)));
       const S::Limit_sample::Vector expected = unit(normal[v]);
       EXPECT_NEAR((s.normal - expected).squared_length(), 0, 1e-24);
-      extraordinary += refined.degree(v) != 4 ? 1 : 0;
+      extraordinary += refined.degree(v) != (o.corners == 4 ? 4u : 6u) ? 1 : 0;
       ++checked;
     }
   }
@@ -108,19 +114,32 @@ TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_near_valen
   expect_limit_of_refined_vertices(mesh, 2);
 }
 
+// Loop, either beta: a tetrahedron (valence 3), a bipyramid (valence 5 and
+// 4), and the bipyramid refined once (valence 4, 5 and 6: the middle
+// triangles of the split, turned by a half turn, evaluated too)
+TEST(LimitSurface, loop_equals_the_limit_of_refined_vertices)
+{
+  expect_limit_of_refined_vertices(testing_utils::tetrahedron<Exact_mesh>(), 2, S::Loop_mask<Exact_mesh>());
+  expect_limit_of_refined_vertices(testing_utils::bipyramid<Exact_mesh>(5), 2,
+                                   S::Loop_mask<Exact_mesh, CGAL::Exact_rational, S::Warren_beta>());
+  Exact_mesh mesh = testing_utils::bipyramid<Exact_mesh>(5);
+  S::loop_subdivision(mesh, S::parameters::number_of_iterations(1));
+  expect_limit_of_refined_vertices(mesh, 2, S::Loop_mask<Exact_mesh>());
+}
+
 // the derivatives of the position, at parameters away from the corners (in
 // double), against central differences
-TEST(LimitSurface, derivatives_agree_with_differences_of_positions)
+template <class Mask>
+void expect_derivatives_of_positions(const Mesh& mesh, const Mask& mask,
+                                     const std::vector<std::pair<double, double>>& parameters)
 {
-  Mesh mesh = testing_utils::prism<Mesh>(5);
-  S::catmull_clark_subdivision(mesh, S::parameters::number_of_iterations(1));
-  const S::Limit_surface<Mesh> surface(mesh);
+  const S::Limit_surface<Mesh, Mask> surface(mesh, mask);
   const double h = 1e-5;
   int faces = 0;
   for(const auto f : mesh.faces()) {
     if(++faces > 12)
       break;
-    for(const auto& [u, v] : std::vector<std::pair<double, double>>{{0.3, 0.6}, {0.05, 0.1}, {0.81, 0.27}}) {
+    for(const auto& [u, v] : parameters) {
       const S::Limit_sample s = surface.evaluate(f, u, v);
       const auto du = (surface.evaluate(f, u + h, v).position - surface.evaluate(f, u - h, v).position) / (2 * h);
       const auto dv = (surface.evaluate(f, u, v + h).position - surface.evaluate(f, u, v - h).position) / (2 * h);
@@ -137,6 +156,16 @@ TEST(LimitSurface, derivatives_agree_with_differences_of_positions)
       EXPECT_NEAR(s.normal * s.du, 0, 1e-9 * std::sqrt(s.du.squared_length()));
     }
   }
+}
+
+TEST(LimitSurface, derivatives_agree_with_differences_of_positions)
+{
+  Mesh quads = testing_utils::prism<Mesh>(5);
+  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+  expect_derivatives_of_positions(quads, S::Catmull_clark_mask<Mesh>(), {{0.3, 0.6}, {0.05, 0.1}, {0.81, 0.27}});
+  Mesh triangles = testing_utils::bipyramid<Mesh>(5);
+  S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+  expect_derivatives_of_positions(triangles, S::Loop_mask<Mesh>(), {{0.3, 0.6}, {0.05, 0.1}, {0.21, 0.27}});
 }
 
 TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
@@ -160,4 +189,8 @@ TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
   expect_refusal([&] { surface.evaluate(triangle, 3, 0.5, 0.5); }, "face 1 has no corner 3");
   const Mesh open = testing_utils::open_fan<Mesh>(4);
   expect_refusal([&] { S::Limit_surface<Mesh> border(open); }, "has a border");
+  expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(box); }, "face 0 is not a triangle");
+  const Mesh triangles = testing_utils::tetrahedron<Mesh>();
+  const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);
+  expect_refusal([&] { loop.evaluate(*triangles.faces().begin(), 0.5, 0.75); }, "not in the triangle's domain");
 }

@@ -50,39 +50,69 @@ struct Limit_sample
   Vector normal = CGAL::NULL_VECTOR;
 };
 
+namespace internal {
+
+/// whether `Mask` is a Catmull-Clark or a Loop mask: the schemes whose
+/// regular patches `Limit_surface` evaluates
+template <class Mask>
+struct Patch_scheme
+{
+  static constexpr bool catmull_clark = false, loop = false;
+};
+template <class Mesh, class FT, bool Tagged>
+struct Patch_scheme<Catmull_clark_mask<Mesh, FT, Tagged>>
+{
+  static constexpr bool catmull_clark = true, loop = false;
+};
+template <class Mesh, class FT, class Beta, bool Tagged>
+struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
+{
+  static constexpr bool catmull_clark = false, loop = true;
+};
+
+} // namespace internal
+
 /*!
  * \ingroup PkgSubdivAnalysis
- * Evaluates the Catmull-Clark limit surface of a closed mesh at any
- * parameter of any face (the first slice of issue 13: no border and no
+ * Evaluates the limit surface of a closed mesh under Catmull-Clark
+ * (`Catmull_clark_mask`, the default) or Loop (`Loop_mask`, either beta) at
+ * any parameter of any face (the first slice of issue 13: no border and no
  * sharpness tag yet; both are refused).
  *
  * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
  * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
- * corner 3 at (0,1); a face with n != 4 corners is addressed as n sub-quads
- * (face, corner c, u, v): (0,0) at corner c, u towards the midpoint of the
- * edge from corner c to corner c+1, v towards the midpoint of the edge from
- * corner c-1 to corner c, (1,1) at the face point.
+ * corner 3 at (0,1); a triangle (Loop) corner 0 at (0,0), corner 1 at (1,0)
+ * and corner 2 at (0,1), with u + v <= 1; under Catmull-Clark a face with
+ * n != 4 corners is addressed as n sub-quads (face, corner c, u, v): (0,0)
+ * at corner c, u towards the midpoint of the edge from corner c to corner
+ * c+1, v towards the midpoint of the edge from corner c-1 to corner c,
+ * (1,1) at the face point.
  *
  * Method: a quad whose four corners have valence 4 (and only quads around
  * them) is a regular patch, evaluated exactly as the bicubic B-spline of its
- * 16 control points (`bspline_patch_weights()`). Any other face is refined
- * locally (its 1-ring, with the library's own `subdivide()`, in the mesh's
- * number type) and the child that holds (u, v) is evaluated in turn: every
- * child away from an extraordinary vertex is regular after one level, and a
- * parameter at distance d from the extraordinary corner is reached after
- * about log2(1/d) levels. So the evaluation is exact in an exact kernel (up
- * to the final conversion to double) at every parameter but an extraordinary
- * vertex itself, where the position is the limit mask of the analysis
- * (`project_to_limit()`), the normal its tangent masks' (`limit_normals()`),
- * and the derivatives, which the parameterisation does not have there, are
- * zero. A parameter closer than 2^-`max_depth` to an extraordinary corner is
- * evaluated at that corner (the surface moves by about
- * lambda^`max_depth` times the patch's size there, lambda < 0.65 the
+ * 16 control points (`bspline_patch_weights()`); so is a triangle whose
+ * three corners have valence 6 (and only triangles around them), as the
+ * quartic box spline of its 12 (`box_spline_patch_weights()`). Any other
+ * face is refined locally (its 1-ring, with the library's own `subdivide()`,
+ * in the mesh's number type) and the child that holds (u, v) is evaluated in
+ * turn: every child away from an extraordinary vertex is regular after one
+ * level, and a parameter at distance d from the extraordinary corner is
+ * reached after about log2(1/d) levels. So the evaluation is exact in an
+ * exact kernel (up to the final conversion to double) at every parameter
+ * but an extraordinary vertex itself, where the position is the limit mask
+ * of the analysis (`project_to_limit()`), the normal its tangent masks'
+ * (`limit_normals()`), and the derivatives, which the parameterisation does
+ * not have there, are zero. A parameter closer than 2^-`max_depth` to an
+ * extraordinary corner is evaluated at that corner (the surface moves by
+ * about lambda^`max_depth` times the patch's size there, lambda < 0.65 the
  * subdominant eigenvalue).
  */
-template <class PolygonMesh>
+template <class PolygonMesh, class Mask = Catmull_clark_mask<PolygonMesh>>
 class Limit_surface
 {
+  static_assert(internal::Patch_scheme<Mask>::catmull_clark || internal::Patch_scheme<Mask>::loop,
+                "Limit_surface: Catmull_clark_mask or Loop_mask");
+  static constexpr bool quads = internal::Patch_scheme<Mask>::catmull_clark;
   using GT = boost::graph_traits<PolygonMesh>;
   using face_descriptor = typename GT::face_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -100,31 +130,44 @@ public:
   /// levels of local refinement at most before a parameter is taken at its extraordinary corner
   int max_depth = 60;
 
-  /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged);
-  /// \throws Bad_input if `mesh` has a border (not supported yet)
-  explicit Limit_surface(const PolygonMesh& mesh) : m_mesh(&mesh)
+  /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
+  /// under the scheme of `mask` (its options kept); \throws Bad_input if `mesh` has a border (not
+  /// supported yet), or under Loop a face that is not a triangle
+  explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
+    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>())
   {
     for(const halfedge_descriptor h : halfedges(mesh))
       if(CGAL::is_border(h, mesh))
         internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
                                              << ordinal_of(target(h, mesh)) << "): not supported yet");
+    if constexpr(!quads)
+      for(const face_descriptor f : faces(mesh))
+        if(degree_of(f) != 3)
+          internal::refuse(internal::Message()
+                           << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
   }
 
-  /// the limit surface at (u, v) of quad `f`; \throws Bad_input if `f` is not a quad or (u, v) is not in [0, 1]^2
+  /// the limit surface at (u, v) of quad (Catmull-Clark) or triangle (Loop) `f`; \throws Bad_input
+  /// if `f` is a Catmull-Clark face with n != 4 corners, or (u, v) is not in its domain
   Limit_sample evaluate(face_descriptor f, double u, double v) const
   {
     check_parameters(u, v);
-    const int corners = degree_of(f);
-    if(corners != 4)
-      internal::refuse(internal::Message()
-                       << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
-                       << corners << " sub-quads (face, corner, u, v)");
-    return to_sample(evaluate_quad(local_patch(*m_mesh, f), FT(u), FT(v), 0));
+    if constexpr(quads) {
+      const int corners = degree_of(f);
+      if(corners != 4)
+        internal::refuse(internal::Message()
+                         << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
+                         << corners << " sub-quads (face, corner, u, v)");
+    } else if(!(u + v <= 1))
+      internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
+                                           << std::to_string(v) << ") is not in the triangle's domain (u + v <= 1)");
+    return to_sample(evaluate_face(local_patch(*m_mesh, f), FT(u), FT(v), 0));
   }
 
   /// the limit surface at (u, v) of the sub-quad at `corner` of face `f` (n != 4 corners)
   Limit_sample evaluate(face_descriptor f, int corner, double u, double v) const
   {
+    static_assert(quads, "Limit_surface: sub-quads are Catmull-Clark's");
     check_parameters(u, v);
     const int corners = degree_of(f);
     if(corners == 4)
@@ -135,8 +178,8 @@ public:
                                            << " (it has " << corners << ")");
     // one level makes the sub-quad a quad of its own, with the same (u, v)
     Patch patch = local_patch(*m_mesh, f);
-    const Child child = refine_and_find(patch, [&](const Face_origin& origin) { return origin.sub_quad == corner; });
-    return to_sample(evaluate_quad(local_patch(child.mesh, child.face_h0), FT(u), FT(v), 1));
+    const Child child = refine_and_find(patch, corner, {0, 0}, {0, 0});
+    return to_sample(evaluate_face(local_patch(child.mesh, child.face_h0), FT(u), FT(v), 1));
   }
 
 private:
@@ -226,16 +269,21 @@ private:
     return patch;
   }
 
-  // whether the face of h0 and the faces around its corners are quads of valence 4 inside
+  // the valence of a regular vertex, and the corners of a regular face
+  static constexpr std::size_t regular_valence = quads ? 4 : 6;
+  static constexpr std::size_t face_corners = quads ? 4 : 3;
+
+  // whether the face of h0 and the faces around its corners are all quads
+  // (triangles) and its corners inner vertices of valence 4 (6)
   static bool is_regular(const Patch& patch)
   {
     const Patch_mesh& mesh = patch.mesh;
     for(const Patch_halfedge h : CGAL::halfedges_around_face(patch.h0, mesh)) {
       const auto corner = mesh.target(h);
-      if(mesh.degree(corner) != 4 || mesh.is_border(corner))
+      if(mesh.degree(corner) != regular_valence || mesh.is_border(corner))
         return false;
       for(const auto g : CGAL::faces_around_target(h, mesh))
-        if(mesh.degree(g) != 4)
+        if(mesh.degree(g) != face_corners)
           return false;
     }
     return true;
@@ -248,7 +296,7 @@ private:
    * from corner i to corner i+1 lie the neighbours of both, and the diagonal
    * neighbour of corner i is the far corner of the face beyond.
    */
-  static std::array<Point, 16> control_points(const Patch& patch)
+  static std::array<Point, 16> quad_control_points(const Patch& patch)
   {
     const Patch_mesh& m = patch.mesh;
     std::array<Patch_halfedge, 4> h;
@@ -272,35 +320,70 @@ private:
     return points;
   }
 
-  static Exact_sample evaluate_regular(const Patch& patch, const FT& u, const FT& v)
+  /*
+   * The 12 control points of a regular triangle, numbered as
+   * `box_spline_patch_weights()` takes them (corner 0 at 4, 1 at 5, 2 at 8).
+   * Turning around corner i from the halfedge into it in the face
+   * (opposite(next(g)) is the next halfedge into it), the sources are corner
+   * i-1, corner i+1, then four vertices of the ring: around corner 0 the
+   * points 1, 0, 3, 7, around corner 1 9, 6, 2, 1, around corner 2 7, 10, 11, 9.
+   */
+  static std::array<Point, 12> triangle_control_points(const Patch& patch)
   {
-    const std::array<Point, 16> points = control_points(patch);
-    const Patch_weights<FT, 16> w = bspline_patch_weights(u, v);
-    const auto combine = [&](const std::array<FT, 16>& weights) {
-      Vector sum = CGAL::NULL_VECTOR;
-      for(std::size_t k = 0; k < 16; ++k)
-        sum = sum + (points[k] - CGAL::ORIGIN) * weights[k];
-      return sum;
+    const Patch_mesh& m = patch.mesh;
+    static const int corner_point[3] = {4, 5, 8};
+    static const int ring[3][4] = {{1, 0, 3, 7}, {9, 6, 2, 1}, {7, 10, 11, 9}};
+    std::array<Point, 12> points;
+    Patch_halfedge into = patch.h0;
+    for(int i = 0; i < 3; ++i, into = m.next(into)) {
+      points[corner_point[i]] = m.point(m.target(into));
+      Patch_halfedge g = m.opposite(m.next(into)); // from corner i+1
+      for(int k = 0; k < 4; ++k) {
+        g = m.opposite(m.next(g));
+        points[ring[i][k]] = m.point(m.source(g));
+      }
+    }
+    return points;
+  }
+
+  template <std::size_t N>
+  static Exact_sample combine(const std::array<Point, N>& points, const Patch_weights<FT, N>& w)
+  {
+    const auto sum = [&](const std::array<FT, N>& weights) {
+      Vector total = CGAL::NULL_VECTOR;
+      for(std::size_t k = 0; k < N; ++k)
+        total = total + (points[k] - CGAL::ORIGIN) * weights[k];
+      return total;
     };
     Exact_sample s;
-    s.position = CGAL::ORIGIN + combine(w.position);
-    s.du = combine(w.du);
-    s.dv = combine(w.dv);
-    s.duu = combine(w.duu);
-    s.duv = combine(w.duv);
-    s.dvv = combine(w.dvv);
+    s.position = CGAL::ORIGIN + sum(w.position);
+    s.du = sum(w.du);
+    s.dv = sum(w.dv);
+    s.duu = sum(w.duu);
+    s.duv = sum(w.duv);
+    s.dvv = sum(w.dvv);
     return s;
   }
 
-  // the corner of the patch's face at (u, v), if (u, v) is a corner
+  static Exact_sample evaluate_regular(const Patch& patch, const FT& u, const FT& v)
+  {
+    if constexpr(quads)
+      return combine(quad_control_points(patch), bspline_patch_weights(u, v));
+    else
+      return combine(triangle_control_points(patch), box_spline_patch_weights(u, v));
+  }
+
+  // the corner of the patch's face at (u, v), if (u, v) is a corner; -1 otherwise
   static int corner_at(const FT& u, const FT& v)
   {
     const bool u0 = u == FT(0), u1 = u == FT(1), v0 = v == FT(0), v1 = v == FT(1);
+    if(!quads && u0 && v1)
+      return 2;
     return u0 && v0 ? 0 : u1 && v0 ? 1 : u1 && v1 ? 2 : u0 && v1 ? 3 : -1;
   }
 
   // the limit position and normal of corner i of the patch's face (the masks of the analysis)
-  static Exact_sample evaluate_at_corner(Patch patch, int i)
+  Exact_sample evaluate_at_corner(Patch patch, int i) const
   {
     Patch_halfedge h = patch.h0;
     for(int k = 0; k < i; ++k)
@@ -313,72 +396,90 @@ private:
                            .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
                              "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
                            .first;
-    limit_normals(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>(), normals);
+    limit_normals(patch.mesh, m_mask, normals);
     s.normal = normals[corner];
-    project_to_limit(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>());
+    project_to_limit(patch.mesh, m_mask);
     s.position = patch.mesh.point(corner);
     return s;
   }
 
   /*
    * Refines the patch one level and returns the child of its face (face 0)
-   * for which `pick(origin)` holds, with the halfedge whose target is the
-   * child's corner at the (min, min) of its box: its corner 0, as the child's
-   * (u, v) runs along the parent's.
+   * in sub-quad `sub_quad` (-1: none) whose box starts at `box_min` and that
+   * has a corner at `anchor`, with the halfedge into that corner: the
+   * child's corner 0 (the parameters are dyadic, exact in double).
    */
-  template <class Pick>
-  static Child refine_and_find(Patch& patch, const Pick& pick)
+  Child refine_and_find(Patch& patch, int sub_quad, std::array<double, 2> box_min, std::array<double, 2> anchor) const
   {
     auto origins =
       patch.mesh.template add_property_map<typename Patch_mesh::Face_index, Face_origin>("f:cgal_subdiv_limit_origin")
         .first;
     Carried_data<Patch_mesh, FT> data;
     data.face_origin_map(origins);
-    subdivide(patch.mesh, Catmull_clark_mask<Patch_mesh, FT>(), parameters::carried_data(data));
+    subdivide(patch.mesh, m_mask, parameters::carried_data(data));
     for(const auto g : patch.mesh.faces()) {
       const Face_origin& origin = origins[g];
-      if(origin.face != 0 || !pick(origin))
-        continue;
       const CGAL::Bbox_2 box = origin.box();
+      if(origin.face != 0 || origin.sub_quad != sub_quad || box.xmin() != box_min[0] || box.ymin() != box_min[1])
+        continue;
       Patch_halfedge h = patch.mesh.halfedge(g);
       for(int i = 0; i < origin.corners; ++i, h = patch.mesh.next(h))
-        if(origin.uv[i][0] == box.xmin() && origin.uv[i][1] == box.ymin())
+        if(origin.uv[i][0] == anchor[0] && origin.uv[i][1] == anchor[1])
           return Child{std::move(patch.mesh), h};
     }
     internal::refuse(internal::Message() << "Limit_surface: no child holds the parameter (an internal error)");
     return Child{};
   }
 
-  // the limit at (u, v) of the patch's quad, `depth` levels below the mesh
-  Exact_sample evaluate_quad(Patch patch, const FT& u, const FT& v, int depth) const
+  /*
+   * The child of the face that holds (u, v), as the split makes it: the
+   * quarter of a quad, or of a triangle a corner triangle or the middle one
+   * (turned by a half turn: its corner 0 at (1/2, 1/2), u' = 1 - 2u and
+   * v' = 1 - 2v), with (u, v) in the child's parameters and the factor that
+   * d/du' is to d/du (2 or -2)
+   */
+  struct Child_parameters
+  {
+    std::array<double, 2> box_min, anchor;
+    FT u, v;
+    FT scale;
+  };
+  static Child_parameters child_parameters(const FT& u, const FT& v)
+  {
+    const FT half = FT(1) / FT(2);
+    if(!quads && u < half && v < half && u + v > half) // the middle triangle
+      return {{0, 0}, {0.5, 0.5}, FT(1) - FT(2) * u, FT(1) - FT(2) * v, FT(-2)};
+    // a quarter of a quad; a corner triangle, u >= 1/2 the one at corner 1
+    const FT a = u < half ? FT(0) : half, b = v < half || (!quads && a == half) ? FT(0) : half;
+    const std::array<double, 2> corner{CGAL::to_double(a), CGAL::to_double(b)};
+    return {corner, corner, FT(2) * (u - a), FT(2) * (v - b), FT(2)};
+  }
+
+  // the limit at (u, v) of the patch's face, `depth` levels below the mesh
+  Exact_sample evaluate_face(Patch patch, const FT& u, const FT& v, int depth) const
   {
     if(is_regular(patch))
       return evaluate_regular(patch, u, v);
     const int corner = corner_at(u, v);
     if(corner >= 0 || depth >= max_depth)
       return evaluate_at_corner(std::move(patch), corner >= 0 ? corner : nearest_corner(u, v));
-    // the child that holds (u, v): the quarter [a, a + 1/2] x [b, b + 1/2]
-    // (its box's bounds are dyadic, exact in double)
-    const FT half = FT(1) / FT(2);
-    const FT a = u < half ? FT(0) : half, b = v < half ? FT(0) : half;
-    const double box_u = CGAL::to_double(a), box_v = CGAL::to_double(b);
-    const Child child = refine_and_find(patch, [&](const Face_origin& origin) {
-      const CGAL::Bbox_2 box = origin.box();
-      return box.xmin() == box_u && box.ymin() == box_v;
-    });
-    Exact_sample s = evaluate_quad(local_patch(child.mesh, child.face_h0), FT(2) * (u - a), FT(2) * (v - b), depth + 1);
-    // d/du = 2 d/du' in the child's parameters
-    s.du = s.du * FT(2);
-    s.dv = s.dv * FT(2);
-    s.duu = s.duu * FT(4);
-    s.duv = s.duv * FT(4);
-    s.dvv = s.dvv * FT(4);
+    const Child_parameters c = child_parameters(u, v);
+    const Child child = refine_and_find(patch, -1, c.box_min, c.anchor);
+    Exact_sample s = evaluate_face(local_patch(child.mesh, child.face_h0), c.u, c.v, depth + 1);
+    // d/du = scale d/du' in the child's parameters
+    s.du = s.du * c.scale;
+    s.dv = s.dv * c.scale;
+    s.duu = s.duu * (c.scale * c.scale);
+    s.duv = s.duv * (c.scale * c.scale);
+    s.dvv = s.dvv * (c.scale * c.scale);
     return s;
   }
 
   static int nearest_corner(const FT& u, const FT& v)
   {
     const FT half = FT(1) / FT(2);
+    if(!quads)
+      return u >= half ? 1 : v >= half ? 2 : 0;
     return u < half ? (v < half ? 0 : 3) : (v < half ? 1 : 2);
   }
 
@@ -402,6 +503,7 @@ private:
   }
 
   const PolygonMesh* m_mesh;
+  decltype(std::declval<const Mask&>().template rebind<Patch_mesh, FT>()) m_mask;
 };
 
 } // namespace Subdiv
