@@ -11,6 +11,7 @@
 #include <CGAL/Subdiv.h>
 #include <CGAL/Subdiv/limit/Limit_surface.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <gtest/gtest.h>
 
@@ -46,7 +47,8 @@ S::Limit_sample::Vector unit(const KE::Vector_3& n)
  * Every vertex of `base` refined `levels` levels sits at a parameter of the
  * base faces around it (face_origin_map): there the evaluator's position is
  * the exact limit of that vertex (project_to_limit), converted to double,
- * bit for bit, and its normal the limit normal's direction (limit_normals).
+ * bit for bit, and its normal the limit normal's direction (limit_normals)
+ * but at a border corner with one face.
  */
 template <class Mask = S::Catmull_clark_mask<Exact_mesh>>
 void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const Mask& mask = Mask())
@@ -83,8 +85,12 @@ void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const 
       else
         s = surface.evaluate(base_faces[o.face], u, w);
       EXPECT_EQ(s.position, to_double(limit.point(v)));
-      const S::Limit_sample::Vector expected = unit(normal[v]);
-      EXPECT_NEAR((s.normal - expected).squared_length(), 0, 1e-24);
+      // (at a corner with one face the analysis finds no C1 tangent plane,
+      // and limit_normals averages the faces around, which depends on the level)
+      if(!(refined.is_border(v) && refined.degree(v) == 2)) {
+        const S::Limit_sample::Vector expected = unit(normal[v]);
+        EXPECT_NEAR((s.normal - expected).squared_length(), 0, 1e-24);
+      }
       extraordinary += refined.degree(v) != (o.corners == 4 ? 4u : 6u) ? 1 : 0;
       ++checked;
     }
@@ -112,6 +118,25 @@ TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_near_valen
   Exact_mesh mesh = testing_utils::prism<Exact_mesh>(5);
   S::catmull_clark_subdivision(mesh, S::parameters::number_of_iterations(1));
   expect_limit_of_refined_vertices(mesh, 2);
+}
+
+// Catmull-Clark with borders: a quad with one side on the border is a
+// regular patch with its row beyond extrapolated; the corners of a grid (one
+// face: smooth corners, refined by the border rule), the border vertices of
+// valence 3 of an open prism (its top cap removed) and its pentagon are
+// refined until regular
+TEST(LimitSurface, catmull_clark_equals_the_limit_of_refined_vertices_with_borders)
+{
+  testing_utils::Rationals r;
+  const auto point = [&r](int i, int j) {
+    return KE::Point_3(i + r.next<CGAL::Exact_rational>(), j + r.next<CGAL::Exact_rational>(),
+                       ((i * j) % 3) + r.next<CGAL::Exact_rational>());
+  };
+  expect_limit_of_refined_vertices(testing_utils::grid<Exact_mesh>(3, 3, point, false), 2);
+  Exact_mesh open = testing_utils::prism<Exact_mesh>(5);
+  CGAL::Euler::remove_face(open.halfedge(*std::next(open.faces().begin())), open); // the top cap
+  open.collect_garbage();
+  expect_limit_of_refined_vertices(open, 2);
 }
 
 // Loop, either beta: a tetrahedron (valence 3), a bipyramid (valence 5 and
@@ -188,7 +213,7 @@ TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
   expect_refusal([&] { surface.evaluate(quad, 0, 0.5, 0.5); }, "face 0 is a quad");
   expect_refusal([&] { surface.evaluate(triangle, 3, 0.5, 0.5); }, "face 1 has no corner 3");
   const Mesh open = testing_utils::open_fan<Mesh>(4);
-  expect_refusal([&] { S::Limit_surface<Mesh> border(open); }, "has a border");
+  expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> border(open); }, "has a border");
   expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(box); }, "face 0 is not a triangle");
   const Mesh triangles = testing_utils::tetrahedron<Mesh>();
   const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);

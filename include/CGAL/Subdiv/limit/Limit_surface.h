@@ -131,20 +131,21 @@ public:
   int max_depth = 60;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
-  /// under the scheme of `mask` (its options kept); \throws Bad_input if `mesh` has a border (not
-  /// supported yet), or under Loop a face that is not a triangle
+  /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
+  /// border (not supported yet) or a face that is not a triangle
   explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
     : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>())
   {
-    for(const halfedge_descriptor h : halfedges(mesh))
-      if(CGAL::is_border(h, mesh))
-        internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
-                                             << ordinal_of(target(h, mesh)) << "): not supported yet");
-    if constexpr(!quads)
+    if constexpr(!quads) {
+      for(const halfedge_descriptor h : halfedges(mesh))
+        if(CGAL::is_border(h, mesh))
+          internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
+                                               << ordinal_of(target(h, mesh)) << "): not supported yet for Loop");
       for(const face_descriptor f : faces(mesh))
         if(degree_of(f) != 3)
           internal::refuse(internal::Message()
                            << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
+    }
   }
 
   /// the limit surface at (u, v) of quad (Catmull-Clark) or triangle (Loop) `f`; \throws Bad_input
@@ -273,17 +274,36 @@ private:
   static constexpr std::size_t regular_valence = quads ? 4 : 6;
   static constexpr std::size_t face_corners = quads ? 4 : 3;
 
+  // the side of the patch's quad on the border (the edge from corner i to
+  // corner i+1), or -1 if none
+  static int border_side(const Patch& patch)
+  {
+    Patch_halfedge h = patch.mesh.next(patch.h0);
+    for(int i = 0; i < 4; ++i, h = patch.mesh.next(h))
+      if(patch.mesh.is_border(patch.mesh.opposite(h)))
+        return i;
+    return -1;
+  }
+
   // whether the face of h0 and the faces around its corners are all quads
-  // (triangles) and its corners inner vertices of valence 4 (6)
+  // (triangles) and its corners inner vertices of valence 4 (6); under
+  // Catmull-Clark, also a quad with one side on the border, whose two ends
+  // have two faces, the other corners being inner of valence 4
   static bool is_regular(const Patch& patch)
   {
     const Patch_mesh& mesh = patch.mesh;
+    const int side = quads ? border_side(patch) : -1;
+    int i = 0;
     for(const Patch_halfedge h : CGAL::halfedges_around_face(patch.h0, mesh)) {
       const auto corner = mesh.target(h);
-      if(mesh.degree(corner) != regular_valence || mesh.is_border(corner))
+      // corner i ends side i - 1 (from corner i - 1) and starts side i
+      const bool on_border_side = side >= 0 && (side == i || (side + 1) % 4 == i);
+      ++i;
+      if(on_border_side ? mesh.degree(corner) != 3 || !mesh.is_border(corner)
+                        : mesh.degree(corner) != regular_valence || mesh.is_border(corner))
         return false;
       for(const auto g : CGAL::faces_around_target(h, mesh))
-        if(mesh.degree(g) != face_corners)
+        if(g != Patch_mesh::null_face() && mesh.degree(g) != face_corners)
           return false;
     }
     return true;
@@ -294,7 +314,12 @@ private:
    * `bspline_patch_weights()` takes them (point 4 r + c in row r along v,
    * column c along u; corner i of the face at 5, 6, 10, 9). Across the edge
    * from corner i to corner i+1 lie the neighbours of both, and the diagonal
-   * neighbour of corner i is the far corner of the face beyond.
+   * neighbour of corner i is the far corner of the face beyond. A side on
+   * the border has nothing beyond: its row (column) is extrapolated, p =
+   * 2 b - q from the border point b and the inner one q behind it, so that
+   * the B-spline refines as Catmull-Clark's border rules do (a border
+   * vertex 3/4, 1/8, 1/8; a border edge its midpoint) and its side is the
+   * cubic B-spline of the border points.
    */
   static std::array<Point, 16> quad_control_points(const Patch& patch)
   {
@@ -303,21 +328,47 @@ private:
     h[0] = patch.h0;
     for(int i = 1; i < 4; ++i)
       h[i] = m.next(h[i - 1]);
-    // by corner i: its point, the neighbour across the edge to corner i+1
+    const int side = border_side(patch);
+    // by corner i: its point, the neighbours across the edge to corner i+1
     // (next to corner i, then to corner i+1), and its diagonal neighbour
     static const int corner_point[4] = {5, 6, 10, 9};
     static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
     static const int diagonal[4] = {0, 3, 15, 12};
     std::array<Point, 16> points;
     for(int i = 0; i < 4; ++i) {
-      const Patch_halfedge out = h[(i + 1) % 4]; // from corner i to corner i+1
-      const Patch_halfedge beyond = m.opposite(out);
       points[corner_point[i]] = m.point(m.target(h[i]));
+      if(i == side) // nothing beyond
+        continue;
+      const Patch_halfedge beyond = m.opposite(h[(i + 1) % 4]); // across the edge from corner i to corner i+1
       points[across[i][0]] = m.point(m.target(m.next(beyond)));
       points[across[i][1]] = m.point(m.target(m.next(m.next(beyond))));
-      points[diagonal[i]] = m.point(m.source(m.prev(m.opposite(m.next(beyond)))));
+      if(side < 0 || (side + 1) % 4 != i) // corner i's diagonal face is not beyond the border
+        points[diagonal[i]] = m.point(m.source(m.prev(m.opposite(m.next(beyond)))));
     }
+    if(side >= 0)
+      extrapolate_beyond(side, points);
     return points;
+  }
+
+  // the points beyond border side `side` of the grid: p = 2 b - q
+  static void extrapolate_beyond(int side, std::array<Point, 16>& points)
+  {
+    // point (r, c) of the grid seen from the side: row 0 beyond the border,
+    // row 1 on it, row 2 inside
+    const auto at = [side](int r, int c) {
+      switch(side) {
+        case 0:
+          return 4 * r + c; // bottom
+        case 1:
+          return 4 * c + (3 - r); // right
+        case 2:
+          return 4 * (3 - r) + (3 - c); // top
+        default:
+          return 4 * (3 - c) + r; // left
+      }
+    };
+    for(int c = 0; c < 4; ++c)
+      points[at(0, c)] = points[at(1, c)] + (points[at(1, c)] - points[at(2, c)]);
   }
 
   /*
