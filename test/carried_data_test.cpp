@@ -560,6 +560,51 @@ TEST(CarriedData, doo_sabin_carries_corner_maps_linearly_by_the_quad_centres)
     [&](const S::Vertex_origin& origin) { return centre.at(corners.at(origin.index)); });
 }
 
+// Doo-Sabin, linear, with creases: the corners that the tags make one new
+// vertex get one value, on the crease or at the corner as the point is (the
+// values being a linear function of the points: uv_of)
+TEST(CarriedData, doo_sabin_gives_the_corners_welded_by_creases_one_linear_value)
+{
+  using H = Exact_mesh::Halfedge_index;
+  Exact_mesh mesh = testing_utils::mixed_box<Exact_mesh>();
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto edge_sharpness = mesh.add_property_map<Exact_mesh::Edge_index, double>("e:sharpness", 0.).first;
+  auto vertex_sharpness = mesh.add_property_map<Exact_mesh::Vertex_index, double>("v:sharpness", 0.).first;
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh))
+      uv[h] = uv_of(mesh.point(target(h, mesh)));
+  // a crease 5 - 4 - 6 (no face has both edges: vertex 4 has the crease rule,
+  // 5 and 6 are darts) and a corner at vertex 3
+  std::vector<std::pair<KE::Point_3, KE::Point_3>> creases;
+  const auto vertex = [](int i) { return Exact_mesh::Vertex_index(i); };
+  for(const int end : {5, 6}) {
+    edge_sharpness[edge(halfedge(vertex(4), vertex(end), mesh).first, mesh)] = 10;
+    creases.emplace_back(mesh.point(vertex(4)), mesh.point(vertex(end)));
+  }
+  const Exact_mesh::Vertex_index corner = vertex(3);
+  vertex_sharpness[corner] = 10;
+  const KE::Point_3 corner_point = mesh.point(corner);
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::all);
+  S::doo_sabin_subdivision(
+    mesh, S::parameters::edge_sharpness_map(edge_sharpness).vertex_sharpness_map(vertex_sharpness).carried_data(data));
+
+  const auto on_a_crease = [&](const KE::Point_3& p) {
+    return std::any_of(creases.begin(), creases.end(), [&](const auto& c) {
+      return CGAL::collinear(c.first, c.second, p) && CGAL::collinear_are_ordered_along_line(c.first, p, c.second);
+    });
+  };
+  std::set<Exact_mesh::Vertex_index> welded; // the new vertices on the creases and at the corner
+  for(auto h : halfedges(mesh)) {
+    const KE::Point_3& p = mesh.point(target(h, mesh));
+    if(is_border(h, mesh) || !(p == corner_point || on_a_crease(p)))
+      continue;
+    EXPECT_EQ(uv[h], uv_of(p)) << h;
+    welded.insert(target(h, mesh));
+  }
+  EXPECT_EQ(welded.size(), 3u); // Chaikin's point next to vertex 4 on each crease edge, and the corner
+}
+
 // the sqrt3 schemes, linear: an old vertex keeps its value, a face point
 // gets the mean of the face's corners
 TEST(CarriedData, sqrt3_schemes_carry_corner_maps_linearly_by_the_face_means)
@@ -577,6 +622,64 @@ TEST(CarriedData, sqrt3_schemes_carry_corner_maps_linearly_by_the_face_means)
     base, uv,
     [](Exact_mesh& m, const auto& data) { S::interpolating_sqrt3_subdivision(m, S::parameters::carried_data(data)); },
     expected);
+}
+
+// the sqrt3 schemes, linear, on a lone triangle after a step that left its
+// border alone, so that the next one trisects it: the two new vertices of a
+// border edge get the values at its thirds, each the third nearer its point
+// (the values being (3x, 6y) of the points), an old vertex keeps its value
+TEST(CarriedData, sqrt3_schemes_carry_corner_maps_linearly_to_the_thirds_of_the_border)
+{
+  using P = KE::Point_3;
+  using Point_2 = KE::Point_2;
+  Exact_mesh base = testing_utils::mesh_of<Exact_mesh>({P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)}, {{0, 1, 2}});
+  S::sqrt3_subdivision(base); // the resting step: its three corners and its face point (vertex 3)
+  ASSERT_EQ(num_vertices(base), 4u);
+  const std::vector<Point_2> uv = {{0, 0}, {3, 0}, {0, 6}, {1, 2}};
+  std::vector<std::set<Point_2>> thirds; // by edge ordinal, the values at its two thirds (border edges)
+  for(auto e : edges(base)) {
+    const Point_2 a = uv[source(halfedge(e, base), base).idx()], b = uv[target(halfedge(e, base), base).idx()];
+    thirds.push_back(is_border(e, base) ? std::set<Point_2>{CGAL::barycenter(a, 2, b, 1), CGAL::barycenter(a, 1, b, 2)}
+                                        : std::set<Point_2>());
+  }
+  for(const bool interpolating : {false, true}) {
+    SCOPED_TRACE(interpolating ? "interpolating sqrt3" : "sqrt3");
+    Exact_mesh mesh = base;
+    auto corner_uv = mesh.add_property_map<Exact_mesh::Halfedge_index, Point_2>("h:uv").first;
+    for(auto h : halfedges(mesh))
+      if(!is_border(h, mesh))
+        corner_uv[h] = uv[target(h, mesh).idx()];
+    std::vector<S::Vertex_origin> origins;
+    S::Carried_data<Exact_mesh> data;
+    data.corner_map(corner_uv, S::Face_varying_interpolation::all).origins(origins);
+    const auto np = S::parameters::carried_data(data);
+    if(interpolating)
+      S::interpolating_sqrt3_subdivision(mesh, np);
+    else
+      S::sqrt3_subdivision(mesh, np);
+    // 4 old vertices, 2 on each border edge (every face has one: it gets no face point)
+    ASSERT_EQ(num_vertices(mesh), 10u);
+    std::vector<std::set<Point_2>> met(thirds.size()); // by edge ordinal, the values of its new vertices
+    for(auto h : halfedges(mesh)) {
+      if(is_border(h, mesh))
+        continue;
+      const S::Vertex_origin& origin = origins[target(h, mesh).idx()];
+      if(origin.kind == S::Origin_kind::edge) {
+        const P& p = mesh.point(target(h, mesh));
+        const auto distance = [&](const Point_2& third) {
+          return CGAL::squared_distance(Point_2(third.x() / 3, third.y() / 6), Point_2(p.x(), p.y()));
+        };
+        const auto nearer = [&](const Point_2& a, const Point_2& b) { return distance(a) < distance(b); };
+        const std::set<Point_2>& edge_thirds = thirds[origin.index];
+        EXPECT_EQ(corner_uv[h], *std::min_element(edge_thirds.begin(), edge_thirds.end(), nearer)) << h;
+        met[origin.index].insert(corner_uv[h]);
+      } else {
+        ASSERT_EQ(origin.kind, S::Origin_kind::vertex) << h;
+        EXPECT_EQ(corner_uv[h], uv[origin.index]) << h;
+      }
+    }
+    EXPECT_EQ(met, thirds); // both thirds of every border edge
+  }
 }
 
 /*

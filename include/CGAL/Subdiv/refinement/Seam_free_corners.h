@@ -141,28 +141,23 @@ private:
  * masks have no counterpart of, the primal splits halving edges).
  */
 template <class Mesh, class FT>
-class Linear_sqrt3_rules
+class Linear_sqrt3_rules : private Linear_quad_mask<Mesh, FT>
 {
+  using Linear = Linear_quad_mask<Mesh, FT>;
+
 public:
-  template <class Accumulator>
-  void vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
-  {
-    m_linear.vertex_node(v, acc);
-  }
+  using Linear::face_node;
+  using Linear::vertex_node;
+  // a border vertex keeps its value too, on both kinds of steps
   template <class Accumulator>
   void border_vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    m_linear.vertex_node(v, acc);
+    vertex_node(v, acc);
   }
   template <class Accumulator>
   void resting_border_vertex_node(const Vertex_view<Mesh>& v, Accumulator& acc) const
   {
-    m_linear.vertex_node(v, acc);
-  }
-  template <class Accumulator>
-  void face_node(const Face_view<Mesh>& f, Accumulator& acc) const
-  {
-    m_linear.face_node(f, acc);
+    vertex_node(v, acc);
   }
   /// the new vertex at k/3 (k = 1, 2) of the way along `e.halfedge()`
   template <class Accumulator>
@@ -171,12 +166,9 @@ public:
     const Mesh& mesh = e.mesh();
     const auto h = e.halfedge();
     Scaled_accumulator<Accumulator, FT> third(acc, FT(1) / FT(3)), two_thirds(acc, FT(2) / FT(3));
-    m_linear.vertex_node(Vertex_view<Mesh>(mesh, k == 1 ? source(h, mesh) : target(h, mesh)), third);
-    m_linear.edge_node(Edge_view<Mesh>(mesh, h), two_thirds);
+    vertex_node(Vertex_view<Mesh>(mesh, k == 1 ? source(h, mesh) : target(h, mesh)), third);
+    Linear::edge_node(Edge_view<Mesh>(mesh, h), two_thirds);
   }
-
-private:
-  Linear_quad_mask<Mesh, FT> m_linear;
 };
 
 /// the linear rules of the split of `Mask`, a scheme that makes new faces
