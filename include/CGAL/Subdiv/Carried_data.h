@@ -394,22 +394,6 @@ public:
       flush();
     }
 
-    // a channel carried by a scheme that makes new faces across the old
-    // edges: its maps have no seam (`prepare`), and are carried as vertex maps
-    template <class Host, class Mask>
-    internal::Seam_free_corners<Mesh, FT> read_seam_free_channel(const Corner_channel& channel, const Host& host,
-                                                                 const Mask& mask) const
-    {
-      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
-      internal::Seam_free_corners<Mesh, FT> result;
-      for(const auto& start : channel.maps) {
-        Corner_map_level map = start(topology);
-        result.add_map(std::move(map.add_row), std::move(map.write));
-      }
-      result.read(topology, host, mask, channel.interpolation);
-      return result;
-    }
-
     // the children of the pinned vertices of a channel are pinned (OpenSubdiv's
     // vertex values inherit their parents' tags)
     void pin_children(const std::vector<vertex_descriptor>& new_vertices)
@@ -425,6 +409,22 @@ public:
             children[number(new_vertices[j])] = true;
         pinned = std::move(children);
       }
+    }
+
+    // a channel carried by a scheme that makes new faces across the old
+    // edges: its maps have no seam (`prepare`), and are carried as vertex maps
+    template <class Host, class Mask>
+    internal::Seam_free_corners<Mesh, FT> read_seam_free_channel(const Corner_channel& channel, const Host& host,
+                                                                 const Mask& mask) const
+    {
+      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
+      internal::Seam_free_corners<Mesh, FT> result;
+      for(const auto& start : channel.maps) {
+        Corner_map_level map = start(topology);
+        result.add_map(std::move(map.add_row), std::move(map.write));
+      }
+      result.read(topology, host, mask, channel.interpolation);
+      return result;
     }
 
     template <class Mask>
