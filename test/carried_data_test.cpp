@@ -402,14 +402,13 @@ TEST(CarriedData, loop_carries_corner_maps_linearly_with_their_seams)
 }
 
 /*
- * Doo-Sabin and sqrt3 have no linear scheme: a linear vertex map, a corner
- * map and the provenance maps are refused, naming what was asked, with the
- * mesh and the map unchanged; the same map carried smoothly is accepted.
+ * Doo-Sabin and sqrt3 make faces across the old edges: the provenance maps
+ * are refused, naming what was asked, with the mesh and the map unchanged;
+ * the same map carried smoothly is accepted.
  */
-TEST(CarriedData, schemes_without_a_linear_scheme_refuse_what_needs_one_and_change_nothing)
+TEST(CarriedData, schemes_across_edges_refuse_the_provenance_maps_and_change_nothing)
 {
-  const std::vector<std::string> requests = {"Interpolation::linear", "corner maps", "face_origin_map",
-                                             "base_origin_map"};
+  const std::vector<std::string> requests = {"face_origin_map", "base_origin_map"};
   for(const std::string scheme : {"doo-sabin", "sqrt3"})
     for(const std::string& request : requests) {
       Mesh mesh = testing_utils::bipyramid<Mesh>(5);
@@ -417,15 +416,10 @@ TEST(CarriedData, schemes_without_a_linear_scheme_refuse_what_needs_one_and_chan
       auto value = mesh.add_property_map<Mesh::Vertex_index, double>("v:value").first;
       for(auto v : vertices(mesh))
         value[v] = static_cast<double>(v.idx());
-      auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(1, 2)).first;
       auto face_origin = mesh.add_property_map<Mesh::Face_index, S::Face_origin>("f:origin").first;
       auto base_origin = mesh.add_property_map<Mesh::Vertex_index, S::Vertex_origin>("v:origin").first;
       S::Carried_data<Mesh> data;
       if(request == requests[0])
-        data.vertex_map(value, S::Interpolation::linear);
-      else if(request == requests[1])
-        data.corner_map(uv, S::Face_varying_interpolation::all);
-      else if(request == requests[2])
         data.face_origin_map(face_origin);
       else
         data.base_origin_map(base_origin);
@@ -441,7 +435,7 @@ TEST(CarriedData, schemes_without_a_linear_scheme_refuse_what_needs_one_and_chan
         ADD_FAILURE() << scheme << " accepted " << request;
       } catch(const S::Bad_input& e) {
         EXPECT_NE(std::string(e.what()).find(request), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("Interpolation::smooth"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("across the old edges"), std::string::npos) << e.what();
       }
       ASSERT_EQ(num_vertices(mesh), num_vertices(before)) << scheme;
       for(auto v : vertices(mesh)) {
@@ -452,6 +446,330 @@ TEST(CarriedData, schemes_without_a_linear_scheme_refuse_what_needs_one_and_chan
       smooth.vertex_map(value);
       refine(smooth);
       EXPECT_GT(num_vertices(mesh), num_vertices(before)) << scheme;
+    }
+}
+
+namespace {
+
+/// a scheme that makes new faces across the old edges, and meshes of its own
+struct Across_edges_case
+{
+  /// the scheme's name, as its messages give it
+  std::string name;
+  /// `levels` levels carrying `data` (isolated vertices kept)
+  std::function<void(Exact_mesh&, int, const S::Carried_data<Exact_mesh>&)> refine;
+  /// a closed mesh and an open one
+  std::vector<Exact_mesh> meshes;
+};
+
+std::vector<Across_edges_case> across_edges_cases()
+{
+  const auto np = [](int levels, const S::Carried_data<Exact_mesh>& data) {
+    return S::parameters::number_of_iterations(levels).isolated_vertices(S::Isolated_vertices::keep).carried_data(data);
+  };
+  const std::vector<Exact_mesh> triangle_meshes = {testing_utils::bipyramid<Exact_mesh>(5),
+                                                   testing_utils::open_fan<Exact_mesh>(5)};
+  return {
+    {"Doo-Sabin",
+     [np](Exact_mesh& m, int levels, const auto& data) { S::doo_sabin_subdivision(m, np(levels, data)); },
+     {testing_utils::mixed_box<Exact_mesh>(), testing_utils::open_fan<Exact_mesh>(5)}},
+    {"sqrt3 (Kobbelt)",
+     [np](Exact_mesh& m, int levels, const auto& data) { S::sqrt3_subdivision(m, np(levels, data)); }, triangle_meshes},
+    {"interpolating sqrt3 (Labsik-Greiner)",
+     [np](Exact_mesh& m, int levels, const auto& data) { S::interpolating_sqrt3_subdivision(m, np(levels, data)); },
+     triangle_meshes}};
+}
+
+/*
+ * A corner map without seams (every corner holds the value of its vertex),
+ * carried by `scheme` in the smooth `mode` through 2 levels, alone and with
+ * an index map: every corner holds the value that the same values carried as
+ * a vertex map with Interpolation::smooth give its vertex, exactly (the
+ * value of the vertex's point, the values being a linear function of the
+ * points); the index map numbers the values one to a vertex, from 0.
+ */
+void expect_seam_free_corners_as_smooth_vertex_maps(const Across_edges_case& scheme, const Exact_mesh& base,
+                                                    S::Face_varying_interpolation mode)
+{
+  using H = Exact_mesh::Halfedge_index;
+  using V = Exact_mesh::Vertex_index;
+  Exact_mesh mesh = base;
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto indexed_uv = mesh.add_property_map<H, KE::Point_2>("h:indexed_uv").first;
+  auto index = mesh.add_property_map<H, std::size_t>("h:index").first;
+  auto vertex_uv = mesh.add_property_map<V, KE::Point_2>("v:uv").first;
+  for(auto v : vertices(mesh))
+    vertex_uv[v] = uv_of(mesh.point(v));
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh)) {
+      uv[h] = indexed_uv[h] = vertex_uv[target(h, mesh)];
+      index[h] = target(h, mesh).idx();
+    }
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, mode).corner_map(indexed_uv, mode, index).vertex_map(vertex_uv);
+  scheme.refine(mesh, 2, data);
+
+  std::map<std::size_t, V> vertex_of_index;
+  for(auto h : halfedges(mesh)) {
+    if(is_border(h, mesh))
+      continue;
+    const V v = target(h, mesh);
+    EXPECT_EQ(uv[h], vertex_uv[v]) << h;
+    EXPECT_EQ(indexed_uv[h], vertex_uv[v]) << h;
+    EXPECT_EQ(vertex_of_index.emplace(index[h], v).first->second, v) << h; // one vertex an index
+    EXPECT_EQ(vertex_uv[v], uv_of(mesh.point(v))) << h;                    // the points' weights (uv_of is linear)
+  }
+  EXPECT_EQ(vertex_of_index.size(), num_vertices(mesh)); // one index a vertex
+  EXPECT_EQ(vertex_of_index.rbegin()->first + 1, num_vertices(mesh));
+}
+
+} // namespace
+
+TEST(CarriedData, schemes_across_edges_carry_seam_free_corner_maps_as_smooth_vertex_maps_exactly)
+{
+  for(const Across_edges_case& scheme : across_edges_cases())
+    for(const Exact_mesh& mesh : scheme.meshes)
+      for(const auto mode : {S::Face_varying_interpolation::none, S::Face_varying_interpolation::corners_plus1}) {
+        SCOPED_TRACE(scheme.name + " mode " + std::to_string(int(mode)));
+        expect_seam_free_corners_as_smooth_vertex_maps(scheme, mesh, mode);
+      }
+}
+
+namespace {
+
+/*
+ * `base` with a corner map without seams, `uv` of its vertex (by index) at
+ * every corner, refined one level by `refine` in Face_varying_interpolation::
+ * all: every corner of a new vertex that came from `origin` holds
+ * `expected(origin)`, exactly, and so does the vertex map of the same values
+ * carried with Interpolation::linear.
+ */
+void expect_linear_corners(const Exact_mesh& base, const std::vector<KE::Point_2>& uv_of_vertex,
+                           const std::function<void(Exact_mesh&, const S::Carried_data<Exact_mesh>&)>& refine,
+                           const std::function<KE::Point_2(const S::Vertex_origin&)>& expected)
+{
+  using H = Exact_mesh::Halfedge_index;
+  Exact_mesh mesh = base;
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto vertex_uv = mesh.add_property_map<Exact_mesh::Vertex_index, KE::Point_2>("v:uv").first;
+  for(auto v : vertices(mesh))
+    vertex_uv[v] = uv_of_vertex[v.idx()];
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh))
+      uv[h] = uv_of_vertex[target(h, mesh).idx()];
+  std::vector<S::Vertex_origin> origins;
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::all)
+    .vertex_map(vertex_uv, S::Interpolation::linear)
+    .origins(origins);
+  refine(mesh, data);
+  ASSERT_EQ(origins.size(), num_vertices(mesh));
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh)) {
+      const auto v = target(h, mesh);
+      EXPECT_EQ(uv[h], expected(origins[v.idx()])) << h;
+      EXPECT_EQ(vertex_uv[v], uv[h]) << h;
+    }
+}
+
+} // namespace
+
+// Doo-Sabin, linear: corner i of face f gets the centre of its quad in the
+// linear quad split of f (on the quad, Doo-Sabin's 9/16, 3/16, 3/16, 1/16)
+TEST(CarriedData, doo_sabin_carries_corner_maps_linearly_by_the_quad_centres)
+{
+  using P = KE::Point_3;
+  using Q = CGAL::Exact_rational;
+  const Exact_mesh base = testing_utils::mesh_of<Exact_mesh>(
+    {P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0), P(2, 0, 0)}, {{0, 1, 2, 3}, {1, 4, 2}});
+  const std::vector<KE::Point_2> uv = {{0, 0}, {4, 0}, {4, 4}, {0, 8}, {12, 0}};
+  // by (face, vertex) of the corner
+  const std::map<std::pair<std::size_t, std::size_t>, KE::Point_2> centre = {
+    {{0, 0}, {1, Q(7, 4)}},        {{0, 1}, {3, Q(5, 4)}},        {{0, 2}, {3, Q(15, 4)}},      {{0, 3}, {1, Q(21, 4)}},
+    {{1, 1}, {Q(17, 3), Q(5, 6)}}, {{1, 4}, {Q(26, 3), Q(5, 6)}}, {{1, 2}, {Q(17, 3), Q(7, 3)}}};
+  std::vector<std::pair<std::size_t, std::size_t>> corners; // by corner ordinal: Dual_split's numbering
+  for(auto f : faces(base))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, base), base))
+      corners.emplace_back(f.idx(), target(h, base).idx());
+  expect_linear_corners(
+    base, uv, [](Exact_mesh& m, const auto& data) { S::doo_sabin_subdivision(m, S::parameters::carried_data(data)); },
+    [&](const S::Vertex_origin& origin) { return centre.at(corners.at(origin.index)); });
+}
+
+// Doo-Sabin, linear, with creases: the corners that the tags make one new
+// vertex get one value, on the crease or at the corner as the point is (the
+// values being a linear function of the points: uv_of)
+TEST(CarriedData, doo_sabin_gives_the_corners_welded_by_creases_one_linear_value)
+{
+  using H = Exact_mesh::Halfedge_index;
+  Exact_mesh mesh = testing_utils::mixed_box<Exact_mesh>();
+  auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+  auto edge_sharpness = mesh.add_property_map<Exact_mesh::Edge_index, double>("e:sharpness", 0.).first;
+  auto vertex_sharpness = mesh.add_property_map<Exact_mesh::Vertex_index, double>("v:sharpness", 0.).first;
+  for(auto h : halfedges(mesh))
+    if(!is_border(h, mesh))
+      uv[h] = uv_of(mesh.point(target(h, mesh)));
+  // a crease 5 - 4 - 6 (no face has both edges: vertex 4 has the crease rule,
+  // 5 and 6 are darts) and a corner at vertex 3
+  std::vector<std::pair<KE::Point_3, KE::Point_3>> creases;
+  const auto vertex = [](int i) { return Exact_mesh::Vertex_index(i); };
+  for(const int end : {5, 6}) {
+    edge_sharpness[edge(halfedge(vertex(4), vertex(end), mesh).first, mesh)] = 10;
+    creases.emplace_back(mesh.point(vertex(4)), mesh.point(vertex(end)));
+  }
+  const Exact_mesh::Vertex_index corner = vertex(3);
+  vertex_sharpness[corner] = 10;
+  const KE::Point_3 corner_point = mesh.point(corner);
+  S::Carried_data<Exact_mesh> data;
+  data.corner_map(uv, S::Face_varying_interpolation::all);
+  S::doo_sabin_subdivision(
+    mesh, S::parameters::edge_sharpness_map(edge_sharpness).vertex_sharpness_map(vertex_sharpness).carried_data(data));
+
+  const auto on_a_crease = [&](const KE::Point_3& p) {
+    return std::any_of(creases.begin(), creases.end(), [&](const auto& c) {
+      return CGAL::collinear(c.first, c.second, p) && CGAL::collinear_are_ordered_along_line(c.first, p, c.second);
+    });
+  };
+  std::set<Exact_mesh::Vertex_index> welded; // the new vertices on the creases and at the corner
+  for(auto h : halfedges(mesh)) {
+    const KE::Point_3& p = mesh.point(target(h, mesh));
+    if(is_border(h, mesh) || !(p == corner_point || on_a_crease(p)))
+      continue;
+    EXPECT_EQ(uv[h], uv_of(p)) << h;
+    welded.insert(target(h, mesh));
+  }
+  EXPECT_EQ(welded.size(), 3u); // Chaikin's point next to vertex 4 on each crease edge, and the corner
+}
+
+// the sqrt3 schemes, linear: an old vertex keeps its value, a face point
+// gets the mean of the face's corners
+TEST(CarriedData, sqrt3_schemes_carry_corner_maps_linearly_by_the_face_means)
+{
+  const Exact_mesh base = testing_utils::tetrahedron<Exact_mesh>(); // faces {0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}
+  const std::vector<KE::Point_2> uv = {{0, 0}, {3, 0}, {0, 3}, {6, 6}};
+  const std::vector<KE::Point_2> mean_of_face = {{1, 1}, {2, 3}, {3, 2}, {3, 3}};
+  const auto expected = [&](const S::Vertex_origin& origin) {
+    return origin.kind == S::Origin_kind::vertex ? uv.at(origin.index) : mean_of_face.at(origin.index);
+  };
+  expect_linear_corners(
+    base, uv, [](Exact_mesh& m, const auto& data) { S::sqrt3_subdivision(m, S::parameters::carried_data(data)); },
+    expected);
+  expect_linear_corners(
+    base, uv,
+    [](Exact_mesh& m, const auto& data) { S::interpolating_sqrt3_subdivision(m, S::parameters::carried_data(data)); },
+    expected);
+}
+
+// the sqrt3 schemes, linear, on a lone triangle after a step that left its
+// border alone, so that the next one trisects it: the two new vertices of a
+// border edge get the values at its thirds, each the third nearer its point
+// (the values being (3x, 6y) of the points), an old vertex keeps its value
+TEST(CarriedData, sqrt3_schemes_carry_corner_maps_linearly_to_the_thirds_of_the_border)
+{
+  using P = KE::Point_3;
+  using Point_2 = KE::Point_2;
+  Exact_mesh base = testing_utils::mesh_of<Exact_mesh>({P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)}, {{0, 1, 2}});
+  S::sqrt3_subdivision(base); // the resting step: its three corners and its face point (vertex 3)
+  ASSERT_EQ(num_vertices(base), 4u);
+  const std::vector<Point_2> uv = {{0, 0}, {3, 0}, {0, 6}, {1, 2}};
+  std::vector<std::set<Point_2>> thirds; // by edge ordinal, the values at its two thirds (border edges)
+  for(auto e : edges(base)) {
+    const Point_2 a = uv[source(halfedge(e, base), base).idx()], b = uv[target(halfedge(e, base), base).idx()];
+    thirds.push_back(is_border(e, base) ? std::set<Point_2>{CGAL::barycenter(a, 2, b, 1), CGAL::barycenter(a, 1, b, 2)}
+                                        : std::set<Point_2>());
+  }
+  for(const bool interpolating : {false, true}) {
+    SCOPED_TRACE(interpolating ? "interpolating sqrt3" : "sqrt3");
+    Exact_mesh mesh = base;
+    auto corner_uv = mesh.add_property_map<Exact_mesh::Halfedge_index, Point_2>("h:uv").first;
+    for(auto h : halfedges(mesh))
+      if(!is_border(h, mesh))
+        corner_uv[h] = uv[target(h, mesh).idx()];
+    std::vector<S::Vertex_origin> origins;
+    S::Carried_data<Exact_mesh> data;
+    data.corner_map(corner_uv, S::Face_varying_interpolation::all).origins(origins);
+    const auto np = S::parameters::carried_data(data);
+    if(interpolating)
+      S::interpolating_sqrt3_subdivision(mesh, np);
+    else
+      S::sqrt3_subdivision(mesh, np);
+    // 4 old vertices, 2 on each border edge (every face has one: it gets no face point)
+    ASSERT_EQ(num_vertices(mesh), 10u);
+    std::vector<std::set<Point_2>> met(thirds.size()); // by edge ordinal, the values of its new vertices
+    for(auto h : halfedges(mesh)) {
+      if(is_border(h, mesh))
+        continue;
+      const S::Vertex_origin& origin = origins[target(h, mesh).idx()];
+      if(origin.kind == S::Origin_kind::edge) {
+        const P& p = mesh.point(target(h, mesh));
+        const auto distance = [&](const Point_2& third) {
+          return CGAL::squared_distance(Point_2(third.x() / 3, third.y() / 6), Point_2(p.x(), p.y()));
+        };
+        const auto nearer = [&](const Point_2& a, const Point_2& b) { return distance(a) < distance(b); };
+        const std::set<Point_2>& edge_thirds = thirds[origin.index];
+        EXPECT_EQ(corner_uv[h], *std::min_element(edge_thirds.begin(), edge_thirds.end(), nearer)) << h;
+        met[origin.index].insert(corner_uv[h]);
+      } else {
+        ASSERT_EQ(origin.kind, S::Origin_kind::vertex) << h;
+        EXPECT_EQ(corner_uv[h], uv[origin.index]) << h;
+      }
+    }
+    EXPECT_EQ(met, thirds); // both thirds of every border edge
+  }
+}
+
+/*
+ * A corner map with a seam (one corner at vertex 3 of its own value, or of
+ * its own index) is refused by the schemes that make faces across the old
+ * edges, naming the scheme and the vertex, before anything is done: the
+ * mesh (with an isolated vertex that `Isolated_vertices::keep` would set
+ * aside) and the maps are unchanged.
+ */
+TEST(CarriedData, schemes_across_edges_refuse_a_corner_map_with_a_seam_and_change_nothing)
+{
+  using H = Exact_mesh::Halfedge_index;
+  for(const Across_edges_case& scheme : across_edges_cases())
+    for(const bool indexed : {false, true}) {
+      SCOPED_TRACE(scheme.name + (indexed ? ", indexed" : ""));
+      Exact_mesh mesh = testing_utils::bipyramid<Exact_mesh>(5);
+      mesh.add_vertex(KE::Point_3(9, 9, 9));
+      auto uv = mesh.add_property_map<H, KE::Point_2>("h:uv").first;
+      auto index = mesh.add_property_map<H, int>("h:index").first;
+      for(auto h : halfedges(mesh))
+        if(!is_border(h, mesh)) {
+          uv[h] = uv_of(mesh.point(target(h, mesh)));
+          index[h] = int(target(h, mesh).idx());
+        }
+      const H seam = halfedge(Exact_mesh::Vertex_index(3), mesh); // a corner of vertex 3 (closed mesh)
+      uv[seam] = KE::Point_2(100, 100);
+      index[seam] = 1000;
+      const Exact_mesh before = mesh;
+      S::Carried_data<Exact_mesh> data;
+      if(indexed)
+        data.corner_map(uv, S::Face_varying_interpolation::corners_plus1, index);
+      else
+        data.corner_map(uv, S::Face_varying_interpolation::all);
+      try {
+        scheme.refine(mesh, 2, data);
+        ADD_FAILURE() << "accepted a seam";
+      } catch(const S::Bad_input& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(scheme.name + " carries corner maps without seams only"), std::string::npos) << message;
+        EXPECT_NE(message.find("vertex 3 has different values in faces"), std::string::npos) << message;
+        EXPECT_NE(message.find("Loop, Catmull-Clark, linear and the butterflies carry seams"), std::string::npos)
+          << message;
+      }
+      ASSERT_EQ(num_vertices(mesh), num_vertices(before));
+      ASSERT_EQ(num_faces(mesh), num_faces(before));
+      const auto uv_before = before.property_map<H, KE::Point_2>("h:uv").first;
+      const auto index_before = before.property_map<H, int>("h:index").first;
+      for(auto v : vertices(mesh))
+        EXPECT_EQ(mesh.point(v), before.point(v)) << v;
+      for(auto h : halfedges(mesh))
+        if(!is_border(h, mesh)) {
+          EXPECT_EQ(uv[h], uv_before[h]) << h;
+          EXPECT_EQ(index[h], index_before[h]) << h;
+        }
     }
 }
 
@@ -1065,6 +1383,7 @@ TEST(FaceVaryingStencilTable, refuses_bad_corner_indices_and_schemes_without_cor
     },
     S::Bad_input);
   index[corner] = 0;
-  EXPECT_NE(message_of(S::Doo_sabin_mask<Exact_mesh>()).find("need a scheme that splits edges"), std::string::npos)
+  EXPECT_NE(message_of(S::Doo_sabin_mask<Exact_mesh>()).find("carries corner maps without seams only"),
+            std::string::npos)
     << message_of(S::Doo_sabin_mask<Exact_mesh>());
 }

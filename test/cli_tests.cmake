@@ -353,10 +353,20 @@ subdiv_cli_test(surface_uv_linear ARGS surface ${islands} -o @WORK@/out.obj --sc
   OUTPUT @WORK@/out.obj TEXTURE_POINTS 18 CONTAINS "vt 2.5 0.5" "vt 3 0.5")
 subdiv_cli_test(surface_uv_zero_levels ARGS surface ${islands} -o @WORK@/out.obj --scheme catmull-clark --levels 0
   OUTPUT @WORK@/out.obj TEXTURE_POINTS 8 CONTAINS "f 1/1 2/2 5/3 4/4" "f 2/5 3/6 6/7 5/8" "vt 2 1")
-# the schemes that make faces across the old edges leave them out, with a note
+# the schemes that make faces across the old edges carry them without seams
+# only: with a seam they are left out, with a note naming it
 subdiv_cli_test(surface_uv_doo_sabin ARGS surface ${islands} -o @WORK@/out.obj --scheme doo-sabin --levels 1
   OUTPUT @WORK@/out.obj TEXTURE_POINTS 0
-  STDERR_REGEX "note: left the texture coordinates \\(vt\\) of '[^']*two_islands.obj' out: --scheme doo-sabin does not carry them")
+  STDERR_REGEX "note: left the texture coordinates \\(vt\\) of '[^']*two_islands.obj' out: --scheme doo-sabin carries them without seams only \\(it makes faces across the old edges; loop, loop-warren, catmull-clark, linear and the butterflies carry seams\\), and vertex 2 has different ones in faces [01] and [01]\n$")
+# one island: one vt per new vertex, the corner of the island kept and the
+# border corner at Chaikin's point (3 (1,0) + (0,0)) / 4, as the points are
+set(one_island ${SUBDIV_CLI_DIR}/two_quads_one_island.obj)
+subdiv_cli_test(surface_uv_doo_sabin_one_island ARGS surface ${one_island} -o @WORK@/out.obj --scheme doo-sabin
+  --levels 1 OUTPUT @WORK@/out.obj VERTICES 8 TEXTURE_POINTS 8 CONTAINS "vt 0 0" "vt 0.75 0" STDERR_REGEX "^$")
+# all: the corner at (0,0) gets the centre of its quad, (1/4, 1/4)
+subdiv_cli_test(surface_uv_doo_sabin_one_island_all ARGS surface ${one_island} -o @WORK@/out.obj --scheme doo-sabin
+  --levels 1 --fvar all OUTPUT @WORK@/out.obj TEXTURE_POINTS 8 CONTAINS "vt 0.25 0.25"
+  FILE @WORK@/out.obj FILE_NOT_REGEX "vt 0 0\n")
 subdiv_cli_test(surface_uv_no_texture ARGS surface ${SUBDIV_CLI_DIR}/tetra.obj -o @WORK@/out.obj --scheme loop --levels 1
   --fvar all OUTPUT @WORK@/out.obj TEXTURE_POINTS 0 STDERR_REGEX "note: --fvar: '[^']*tetra.obj' has no texture coordinates")
 subdiv_cli_error(surface_uv_bad_fvar 2 "--fvar is none, corners-only, corners-plus1, corners-plus2, boundaries or all, not 'linear'"

@@ -48,11 +48,19 @@ struct Surface_scheme
   /// whether --limit and --displace take the tags too (not for doo-sabin:
   /// `internal::Limit_takes_sharpness_tags`)
   bool limit_sharp = true;
-  /// whether `run_sharp` carries the texture coordinates of the mesh
-  /// (surface_from_soup.h) with their seams, in the mode of the options: the
-  /// schemes that split edges (not doo-sabin and the sqrt3 schemes)
-  bool carries_texture_points = false;
+  /// whether `run_sharp`, which carries the texture coordinates of the mesh
+  /// (surface_from_soup.h) in the mode of the options, carries them with
+  /// seams: the schemes that split edges; doo-sabin and the sqrt3 schemes
+  /// carry them without seams only (`texture_seam`)
+  bool carries_texture_seams = false;
 };
+
+/// the first seam of the texture coordinates of `mesh` (two corners of a
+/// vertex with different vt indices, as `Carried_data` tells them apart),
+/// "vertex 12 has different ones in faces 3 and 5", the vertex by its number
+/// in the file (`file_numbers`, by vertex, if not empty) and the faces from 0
+/// in the file's order; empty if there is none
+std::string texture_seam(const Surface& mesh, const std::vector<std::size_t>& file_numbers);
 
 /// every scheme this build offers, in the order of --help
 const std::vector<Surface_scheme>& surface_schemes();

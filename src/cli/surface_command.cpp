@@ -60,9 +60,11 @@ void apply_sharp_angle(const Parsed_args& args, Surface& mesh, Sharp_options& op
 }
 
 // whether the texture coordinates of `mesh` (an OBJ file's vt) are carried
-// to OUTPUT: they are removed, with a note, where they cannot be
+// to OUTPUT: they are removed, with a note, where they cannot be (a seam
+// that the scheme does not carry is named by the file's numbers)
 bool keep_texture_points(Surface& mesh, const Surface_scheme& scheme, const Parsed_args& args,
-                         Mesh_format output_format, const std::string& input, std::vector<std::string>& notes)
+                         Mesh_format output_format, const std::string& input,
+                         const std::vector<std::size_t>& file_numbers, std::vector<std::string>& notes)
 {
   if(!has_texture_points(mesh)) {
     if(args.has("--fvar"))
@@ -70,15 +72,19 @@ bool keep_texture_points(Surface& mesh, const Surface_scheme& scheme, const Pars
     return false;
   }
   std::string why;
-  if(!scheme.carries_texture_points || !scheme.run_sharp)
-    why = "--scheme " + scheme.name +
-          " does not carry them (it makes faces across the old edges; loop, loop-warren, catmull-clark, linear "
-          "and the butterflies do)";
+  if(!scheme.run_sharp)
+    why = "--scheme " + scheme.name + " does not carry them";
   else if(args.has("--displace"))
     why = "--displace does not carry them yet";
   else if(output_format != Mesh_format::obj)
     why = "OUTPUT '" + args.value("-o") + "' is " + mesh_format_name(output_format) +
           ", which holds none (write .obj to keep them)";
+  else if(!scheme.carries_texture_seams)
+    if(const std::string seam = texture_seam(mesh, file_numbers); !seam.empty())
+      why = "--scheme " + scheme.name +
+            " carries them without seams only (it makes faces across the old edges; loop, loop-warren, "
+            "catmull-clark, linear and the butterflies carry seams), and " +
+            seam;
   if(why.empty())
     return true;
   notes.push_back("left the texture coordinates (vt) of '" + input + "' out: " + why);
@@ -377,7 +383,7 @@ int surface_command(const std::vector<std::string>& arguments)
     sharp_options.face_varying = face_varying_mode(args.value("--fvar"));
   // the texture coordinates are carried by the refinement with tags (which
   // takes the plain path when they are all zero, as they are then)
-  const bool textured = keep_texture_points(mesh, scheme, args, output_format, input, notes);
+  const bool textured = keep_texture_points(mesh, scheme, args, output_format, input, file_numbers, notes);
   keep_colours(mesh, args, output_format, input, notes);
   keep_normals(mesh, args, output_format, input, notes);
   const Sharp_options* refine_options = tagged || textured ? &sharp_options : nullptr;

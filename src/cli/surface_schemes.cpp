@@ -80,7 +80,7 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
                         {}};
   scheme.semi_sharp = SD::internal::Takes_semi_sharp_tags<Mask>::value;
   scheme.limit_sharp = SD::internal::Limit_takes_sharpness_tags<Mask>::value;
-  scheme.carries_texture_points = SD::Carried_data<Surface, double>::carries_corner_maps<Mask>();
+  scheme.carries_texture_seams = SD::Carried_data<Surface, double>::carries_seams<Mask>();
   if constexpr(SD::internal::Takes_sharpness_tags<Mask>::value)
     scheme.run_sharp = [](Surface& mesh, int levels, double max_memory, const Sharp_options& options) {
       const auto carried = carried_maps(mesh, options.face_varying);
@@ -96,6 +96,18 @@ Surface_scheme row(const std::string& name, const std::string& description, cons
 }
 
 } // namespace
+
+std::string texture_seam(const Surface& mesh, const std::vector<std::size_t>& file_numbers)
+{
+  const auto indices = mesh.property_map<Surface::Halfedge_index, std::size_t>(texture_index_name).first;
+  const auto seam = SD::internal::first_seam(
+    mesh, [&](Surface::Halfedge_index a, Surface::Halfedge_index b) { return indices[a] == indices[b]; });
+  if(!seam)
+    return "";
+  const std::size_t vertex = seam->vertex < file_numbers.size() ? file_numbers[seam->vertex] : seam->vertex;
+  return "vertex " + std::to_string(vertex) + " has different ones in faces " + std::to_string(seam->face) + " and " +
+         std::to_string(seam->other_face);
+}
 
 const std::vector<std::string>& surface_scheme_keywords()
 {

@@ -14,6 +14,7 @@
 #include <CGAL/Subdiv/refinement/Face_varying.h>
 #include <CGAL/Subdiv/refinement/Inherited_face_map.h>
 #include <CGAL/Subdiv/refinement/Provenance.h>
+#include <CGAL/Subdiv/refinement/Seam_free_corners.h>
 #include <CGAL/Subdiv/refinement/carried_values.h>
 #include <CGAL/Subdiv/refinement/refine_level.h>
 #include <CGAL/Subdiv/stencils/Stencil.h>
@@ -48,7 +49,11 @@ enum class Interpolation {
   /// (`Linear_quad_mask` for Catmull-Clark, `Linear_triangle_mask` for Loop and
   /// the butterflies): an old vertex keeps its value, an edge point gets the
   /// mean of the edge's ends, a face point the mean of the face's corners;
-  /// Doo-Sabin and the sqrt3 schemes have no such scheme and refuse it
+  /// for Doo-Sabin and the sqrt3 schemes, which have no linear scheme, the
+  /// linear rules of their split (`internal::Linear_dual_rules`,
+  /// `internal::Linear_sqrt3_rules`): a Doo-Sabin corner gets the centre of
+  /// its quad in the linear quad split of its face, a sqrt3 old vertex keeps
+  /// its value and a face point gets the mean of the face's corners
   linear
 };
 
@@ -79,7 +84,14 @@ enum class Interpolation {
  *   With `all` (and with the linear schemes in every mode), every corner of a
  *   new face gets the combination of the corner values of its parent face
  *   that the linear scheme of the split gives its vertex. A seam stays a
- *   seam; border halfedges are left alone. For the schemes that split edges.
+ *   seam; border halfedges are left alone. Doo-Sabin and the sqrt3 schemes,
+ *   which make new faces across the old edges (a face there would straddle a
+ *   seam), carry a corner map only when it has no seam (every vertex holds one
+ *   value at all its corners; else `subdivide()` throws `Bad_input` naming
+ *   the first seam, the mesh and the maps unchanged): such a map is a vertex
+ *   map, carried as `vertex_map` carries one, with `Interpolation::smooth` in
+ *   every smooth mode (the scheme's own rules, border rules included: the
+ *   smooth modes are one) and with `Interpolation::linear` in `all`.
  * - `corner_map(map, mode, index_map)`: the same, the face-varying topology
  *   coming from a halfedge map of value indices (as OpenSubdiv's face-varying
  *   channels and OBJ's `vt` references give it): two corners at one vertex
@@ -287,7 +299,10 @@ public:
         m_vertex_writers.push_back(channel.make_writer(
           channel.interpolation == Interpolation::linear ? m_linear_stencils.rows : m_stencils.rows));
       for(const auto& channel : m_data->m_corner_channels)
-        m_corner_levels.push_back(read_channel(channel, mask));
+        if constexpr(carries_seams<Mask>())
+          m_corner_levels.push_back(read_channel(channel, mask));
+        else
+          m_seam_free_levels.push_back(read_seam_free_channel(channel, host, mask));
       for(const auto& channel : m_data->m_face_channels)
         m_face_writers.push_back(channel(*m_mesh));
     }
@@ -301,6 +316,8 @@ public:
         write_corners(level);
         pin_children(level.elements().vertices);
       }
+      for(const auto& seam_free : m_seam_free_levels)
+        seam_free.write(level);
       if(m_data->m_put_point)
         write_points(level.elements().vertices);
       if(m_vertex_writers.empty() && m_face_writers.empty())
@@ -428,6 +445,22 @@ public:
       }
     }
 
+    // a channel carried by a scheme that makes new faces across the old
+    // edges: its maps have no seam (`prepare`), and are carried as vertex maps
+    template <class Host, class Mask>
+    internal::Seam_free_corners<Mesh, FT> read_seam_free_channel(const Corner_channel& channel, const Host& host,
+                                                                 const Mask& mask) const
+    {
+      const internal::Face_varying_topology<Mesh> topology(*m_mesh, channel.same);
+      internal::Seam_free_corners<Mesh, FT> result;
+      for(const auto& start : channel.maps) {
+        Corner_map_level map = start(topology);
+        result.add_map(std::move(map.add_row), std::move(map.write));
+      }
+      result.read(topology, host, mask, channel.interpolation);
+      return result;
+    }
+
     template <class Mask>
     void read_provenance(const Mask&)
     {
@@ -459,44 +492,49 @@ public:
     internal::Provenance_level<Mesh> m_provenance;
     std::vector<Vertex_writer> m_vertex_writers;
     std::vector<Corner_level> m_corner_levels;
+    std::vector<internal::Seam_free_corners<Mesh, FT>> m_seam_free_levels;
     std::vector<Face_writer> m_face_writers;
   };
 
-  /// called by `subdivide()` before the first level: throws `Bad_input` if
-  /// `mask` cannot carry these maps (see `Interpolation::linear`, `Face_origin`),
-  /// and makes the mesh of the call the base of the provenance maps
+  /// called by `subdivide()` before the first level, `mesh` untouched yet:
+  /// throws `Bad_input` if `mask` cannot carry these maps (the provenance
+  /// maps, `Face_origin`; a corner map with a seam, `carries_seams()`), and
+  /// makes the mesh of the call the base of the provenance maps
   template <class Mask>
-  void prepare(const Mask& mask) const
+  void prepare(const Mesh& mesh, const Mask& mask) const
   {
-    if(interpolates(Interpolation::linear) || !m_corner_channels.empty() || wants_provenance())
-      (void)linear_mask(mask);
+    if constexpr(!carries_seams<Mask>()) {
+      if(wants_provenance())
+        internal::refuse(internal::Message()
+                         << "Carried_data: face_origin_map and base_origin_map need a scheme that splits edges "
+                            "(Catmull-Clark, Loop, the butterflies, linear); "
+                         << mask.name() << " makes faces across the old edges");
+      for(const Corner_channel& channel : m_corner_channels)
+        internal::refuse_seams(mesh, channel.same, mask.name());
+    } else
+      (void)mesh;
     m_provenance.base_pending = true;
   }
 
   /// true if the scheme of `Mask` splits the old edges (Catmull-Clark, Loop,
-  /// the butterflies, linear): only such a scheme carries corner maps, vertex
-  /// maps with `Interpolation::linear` and the provenance maps
+  /// the butterflies, linear): only such a scheme carries corner maps with
+  /// seams and the provenance maps; Doo-Sabin and the sqrt3 schemes, which
+  /// make new faces across the old edges, carry corner maps without seams
   template <class Mask>
-  static constexpr bool carries_corner_maps()
+  static constexpr bool carries_seams()
   {
     return Mask::split == Split::quad || Mask::split == Split::triangle_quadrisection;
   }
 
 private:
-  // the linear scheme of the mask's split: see `Interpolation::linear`
+  // the linear scheme of the mask's split, or its linear rules: see
+  // `Interpolation::linear`
   template <class Mask>
   static auto linear_mask(const Mask& mask)
   {
-    if constexpr(!carries_corner_maps<Mask>()) {
-      internal::refuse(internal::Message()
-                       << "Carried_data: vertex maps with Interpolation::linear, corner maps, face_origin_map and "
-                          "base_origin_map need a scheme that splits edges (Catmull-Clark, Loop, the butterflies, "
-                          "linear); "
-                       << mask.name()
-                       << " has none (it makes faces across the old edges): carry vertex maps with "
-                          "Interpolation::smooth");
-      return mask;
-    } else if constexpr(Mask::split == Split::quad)
+    if constexpr(!carries_seams<Mask>())
+      return internal::linear_rules_across_edges<Mesh, FT>(mask);
+    else if constexpr(Mask::split == Split::quad)
       return Linear_quad_mask<Mesh, FT>();
     else
       return Linear_triangle_mask<Mesh, FT>();

@@ -144,7 +144,7 @@ void subdivide(PolygonMesh& mesh, const Mask& mask, const NamedParameters& np = 
     data = get_parameter(np, internal::carried_data_t());
     carried = data != nullptr && !data->empty();
     if(carried)
-      data->prepare(mask);
+      data->prepare(mesh, mask);
   }
   // set aside before the refinement, put back after it (kept: unrefined)
   internal::Isolated_points<VPM> set_aside;
