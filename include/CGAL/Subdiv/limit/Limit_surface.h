@@ -16,6 +16,7 @@
 #include <CGAL/Subdiv/limit/patch_basis.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -30,6 +31,8 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
