@@ -16,6 +16,7 @@
 #include <CGAL/Subdiv/limit/patch_basis.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
+#include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -147,6 +148,9 @@ public:
                            << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
     }
   }
+
+  /// the mesh whose limit this is
+  const PolygonMesh& mesh() const { return *m_mesh; }
 
   /// the limit surface at (u, v) of quad (Catmull-Clark) or triangle (Loop) `f`; \throws Bad_input
   /// if `f` is a Catmull-Clark face with n != 4 corners, or (u, v) is not in its domain
