@@ -6,7 +6,7 @@
 /// \file limit.h
 /// Convenience header of the limit surface: limit positions and normals,
 /// displacement, limit stencil tables (they use the analysis' masks), and the
-/// bases of the regular patches.
+/// bases of the regular patches, the limit anywhere and its tessellation.
 
 #include <CGAL/Subdiv/limit/Limit_evaluator.h>
 #include <CGAL/Subdiv/limit/Limit_surface.h>
@@ -14,5 +14,6 @@
 #include <CGAL/Subdiv/limit/make_limit_stencil_table.h>
 #include <CGAL/Subdiv/limit/patch_basis.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
+#include <CGAL/Subdiv/limit/tessellate.h>
 
 #endif // CGAL_SUBDIV_LIMIT_H

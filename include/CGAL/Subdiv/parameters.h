@@ -68,6 +68,10 @@ struct boundary_interpolation_t
 {};
 struct triangle_subdivision_t
 {};
+struct triangulate_t
+{};
+struct output_normals_t
+{};
 
 } // namespace internal
 
@@ -115,8 +119,8 @@ using CGAL::parameters::is_default_parameter;
  *    results do not depend on it, bit for bit;
  *  - closed: curves, whether the polyline is closed (default false);
  *  - end_rule: curves, what happens at the ends of an open polyline (`End_rule`);
- *  - max_output_points: curves, refuse, before allocating, a call whose output
- *    would have more points;
+ *  - max_output_points: curves and `tessellate()`, refuse, before allocating,
+ *    a call whose output would have more points;
  *  - flatness_tolerance: Bezier curves, refine each segment until it is this
  *    flat (instead of a fixed depth);
  *  - characteristic_map: analysis, test the characteristic map, the costliest
@@ -149,6 +153,10 @@ using CGAL::parameters::is_default_parameter;
  *    (`Boundary_interpolation`; default edges only);
  *  - triangle_subdivision: Catmull-Clark, the edge rule next to triangles
  *    (`Triangle_subdivision`; default catmark);
+ *  - triangulate: `tessellate()`, triangles only (default false: quads where
+ *    the domain is a quad grid);
+ *  - output_normals: `tessellate()`, the limit normals into the vertex
+ *    property "v:normal" of the output (default false);
  *  - non_manifold_copies: `face_varying_limit()`, a vertex property map giving
  *    every vertex the point it copies, as `Carried_data::non_manifold_copies`
  *    takes and keeps it.
@@ -183,6 +191,8 @@ using CGAL::parameters::is_default_parameter;
   X(face_hole_map, internal::face_hole_map_t)                        \
   X(boundary_interpolation, internal::boundary_interpolation_t)      \
   X(triangle_subdivision, internal::triangle_subdivision_t)          \
+  X(triangulate, internal::triangulate_t)                            \
+  X(output_normals, internal::output_normals_t)                      \
   X(non_manifold_copies, internal::non_manifold_copies_t)
 // (name, tag, const if the argument is read only)
 #define CGAL_SUBDIV_FOR_EACH_REFERENCE_PARAMETER(X) \

@@ -151,6 +151,9 @@ public:
     }
   }
 
+  /// the mesh whose limit this is
+  const PolygonMesh& mesh() const { return *m_mesh; }
+
   /// the limit surface at (u, v) of quad (Catmull-Clark) or triangle (Loop) `f`; \throws Bad_input
   /// if `f` is a Catmull-Clark face with n != 4 corners, or (u, v) is not in its domain
   Limit_sample evaluate(face_descriptor f, double u, double v) const
