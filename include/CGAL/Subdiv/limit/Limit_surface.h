@@ -13,7 +13,9 @@
 #include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/limit/Stam_eigenbasis.h>
 #include <CGAL/Subdiv/limit/patch_basis.h>
+#include <CGAL/Subdiv/limit/patch_points.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Loop_mask.h>
@@ -29,7 +31,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -95,15 +101,24 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * them) is a regular patch, evaluated exactly as the bicubic B-spline of its
  * 16 control points (`bspline_patch_weights()`); so is a triangle whose
  * three corners have valence 6 (and only triangles around them), as the
- * quartic box spline of its 12 (`box_spline_patch_weights()`). Any other
- * face is refined locally (its 1-ring, with the library's own `subdivide()`,
- * in the mesh's number type) and the child that holds (u, v) is evaluated in
- * turn: every child away from an extraordinary vertex is regular after one
- * level, and a parameter at distance d from the extraordinary corner is
- * reached after about log2(1/d) levels. So the evaluation is exact in an
- * exact kernel (up to the final conversion to double) at every parameter
- * but an extraordinary vertex itself, where the position is the limit mask
- * of the analysis (`project_to_limit()`), the normal its tangent masks'
+ * quartic box spline of its 12 (`box_spline_patch_weights()`). In a
+ * floating-point kernel, a patch whose one extraordinary corner is inner
+ * (all its faces quads, or triangles) is evaluated by Stam's method
+ * (`Stam_eigenbasis.h`): the local subdivision matrix of the patch and of
+ * its three regular children, read off the mask's own refinement of the
+ * patch, are diagonalised once per valence (cached), and a parameter at
+ * any distance from the corner costs one product with the eigenbasis, no
+ * refinement; where the matrix is not diagonalisable (Loop at valence 3)
+ * such patches are refined as below. Any other
+ * face (and every face in an exact kernel) is refined locally (its 1-ring,
+ * with the library's own `subdivide()`, in the mesh's number type) and the
+ * child that holds (u, v) is evaluated in turn: every child away from an
+ * extraordinary vertex is regular after one level, and a parameter at
+ * distance d from the extraordinary corner is reached after about
+ * log2(1/d) levels. So the evaluation is exact in an exact kernel (up to
+ * the final conversion to double) at every parameter but an extraordinary
+ * vertex itself, where the position is the limit mask of the analysis
+ * (`project_to_limit()`), the normal its tangent masks'
  * (`limit_normals()`), and the derivatives, which the parameterisation does
  * not have there, are zero. A parameter closer than 2^-`max_depth` to an
  * extraordinary corner is evaluated at that corner (the surface moves by
@@ -132,12 +147,15 @@ class Limit_surface
 public:
   /// levels of local refinement at most before a parameter is taken at its extraordinary corner
   int max_depth = 60;
+  /// whether a patch with one extraordinary corner is evaluated with Stam's eigenbasis (floating-point
+  /// kernels only; exact kernels always refine): `false` refines it, for comparisons
+  bool eigenbasis = true;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
   /// border (not supported yet) or a face that is not a triangle
   explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
-    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>())
+    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>()), m_eigenbases(std::make_shared<Eigenbases>(m_mask))
   {
     if constexpr(!quads) {
       for(const halfedge_descriptor h : halfedges(mesh))
@@ -149,6 +167,18 @@ public:
           internal::refuse(internal::Message()
                            << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
     }
+  }
+
+  /// the valences whose Stam eigenbasis has been built so far (by the evaluations near them), with the
+  /// condition number of its eigenvector matrix: infinite where it is not used (not diagonalisable in
+  /// the reals, or too ill-conditioned), and those patches are refined instead
+  std::map<std::size_t, double> eigenbasis_conditions() const
+  {
+    const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
+    std::map<std::size_t, double> conditions;
+    for(const auto& [n, basis] : m_eigenbases->by_valence)
+      conditions[n] = basis->usable() ? basis->condition() : std::numeric_limits<double>::infinity();
+    return conditions;
   }
 
   /// the mesh whose limit this is
@@ -168,6 +198,8 @@ public:
     } else if(!(u + v <= 1))
       internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
                                            << std::to_string(v) << ") is not in the triangle's domain (u + v <= 1)");
+    if(std::optional<Exact_sample> s = evaluate_directly(*m_mesh, halfedge(f, *m_mesh), FT(u), FT(v), 0))
+      return to_sample(*s);
     return to_sample(evaluate_face(local_patch(*m_mesh, f), FT(u), FT(v), 0));
   }
 
@@ -185,11 +217,12 @@ public:
                                            << " (it has " << corners << ")");
     // one level makes the sub-quad a quad of its own, with the same (u, v)
     Patch patch = local_patch(*m_mesh, f);
-    const Child child = refine_and_find(patch, corner, {0, 0}, {0, 0});
+    const Child child = refine_and_find(patch, {corner, {0, 0}, {0, 0}});
     return to_sample(evaluate_face(local_patch(child.mesh, child.face_h0), FT(u), FT(v), 1));
   }
 
 private:
+  using Eigenbasis = internal::Stam_eigenbasis<quads ? 16 : 12>;
   // a face of a small mesh, with the halfedge whose target is its corner 0
   struct Patch
   {
@@ -276,133 +309,6 @@ private:
     return patch;
   }
 
-  // the valence of a regular vertex, and the corners of a regular face
-  static constexpr std::size_t regular_valence = quads ? 4 : 6;
-  static constexpr std::size_t face_corners = quads ? 4 : 3;
-
-  // the side of the patch's quad on the border (the edge from corner i to
-  // corner i+1), or -1 if none
-  static int border_side(const Patch& patch)
-  {
-    Patch_halfedge h = patch.mesh.next(patch.h0);
-    for(int i = 0; i < 4; ++i, h = patch.mesh.next(h))
-      if(patch.mesh.is_border(patch.mesh.opposite(h)))
-        return i;
-    return -1;
-  }
-
-  // whether the face of h0 and the faces around its corners are all quads
-  // (triangles) and its corners inner vertices of valence 4 (6); under
-  // Catmull-Clark, also a quad with one side on the border, whose two ends
-  // have two faces, the other corners being inner of valence 4
-  static bool is_regular(const Patch& patch)
-  {
-    const Patch_mesh& mesh = patch.mesh;
-    const int side = quads ? border_side(patch) : -1;
-    int i = 0;
-    for(const Patch_halfedge h : CGAL::halfedges_around_face(patch.h0, mesh)) {
-      const auto corner = mesh.target(h);
-      // corner i ends side i - 1 (from corner i - 1) and starts side i
-      const bool on_border_side = side >= 0 && (side == i || (side + 1) % 4 == i);
-      ++i;
-      if(on_border_side ? mesh.degree(corner) != 3 || !mesh.is_border(corner)
-                        : mesh.degree(corner) != regular_valence || mesh.is_border(corner))
-        return false;
-      for(const auto g : CGAL::faces_around_target(h, mesh))
-        if(g != Patch_mesh::null_face() && mesh.degree(g) != face_corners)
-          return false;
-    }
-    return true;
-  }
-
-  /*
-   * The 16 control points of a regular quad, numbered as
-   * `bspline_patch_weights()` takes them (point 4 r + c in row r along v,
-   * column c along u; corner i of the face at 5, 6, 10, 9). Across the edge
-   * from corner i to corner i+1 lie the neighbours of both, and the diagonal
-   * neighbour of corner i is the far corner of the face beyond. A side on
-   * the border has nothing beyond: its row (column) is extrapolated, p =
-   * 2 b - q from the border point b and the inner one q behind it, so that
-   * the B-spline refines as Catmull-Clark's border rules do (a border
-   * vertex 3/4, 1/8, 1/8; a border edge its midpoint) and its side is the
-   * cubic B-spline of the border points.
-   */
-  static std::array<Point, 16> quad_control_points(const Patch& patch)
-  {
-    const Patch_mesh& m = patch.mesh;
-    std::array<Patch_halfedge, 4> h;
-    h[0] = patch.h0;
-    for(int i = 1; i < 4; ++i)
-      h[i] = m.next(h[i - 1]);
-    const int side = border_side(patch);
-    // by corner i: its point, the neighbours across the edge to corner i+1
-    // (next to corner i, then to corner i+1), and its diagonal neighbour
-    static const int corner_point[4] = {5, 6, 10, 9};
-    static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
-    static const int diagonal[4] = {0, 3, 15, 12};
-    std::array<Point, 16> points;
-    for(int i = 0; i < 4; ++i) {
-      points[corner_point[i]] = m.point(m.target(h[i]));
-      if(i == side) // nothing beyond
-        continue;
-      const Patch_halfedge beyond = m.opposite(h[(i + 1) % 4]); // across the edge from corner i to corner i+1
-      points[across[i][0]] = m.point(m.target(m.next(beyond)));
-      points[across[i][1]] = m.point(m.target(m.next(m.next(beyond))));
-      if(side < 0 || (side + 1) % 4 != i) // corner i's diagonal face is not beyond the border
-        points[diagonal[i]] = m.point(m.source(m.prev(m.opposite(m.next(beyond)))));
-    }
-    if(side >= 0)
-      extrapolate_beyond(side, points);
-    return points;
-  }
-
-  // the points beyond border side `side` of the grid: p = 2 b - q
-  static void extrapolate_beyond(int side, std::array<Point, 16>& points)
-  {
-    // point (r, c) of the grid seen from the side: row 0 beyond the border,
-    // row 1 on it, row 2 inside
-    const auto at = [side](int r, int c) {
-      switch(side) {
-        case 0:
-          return 4 * r + c; // bottom
-        case 1:
-          return 4 * c + (3 - r); // right
-        case 2:
-          return 4 * (3 - r) + (3 - c); // top
-        default:
-          return 4 * (3 - c) + r; // left
-      }
-    };
-    for(int c = 0; c < 4; ++c)
-      points[at(0, c)] = points[at(1, c)] + (points[at(1, c)] - points[at(2, c)]);
-  }
-
-  /*
-   * The 12 control points of a regular triangle, numbered as
-   * `box_spline_patch_weights()` takes them (corner 0 at 4, 1 at 5, 2 at 8).
-   * Turning around corner i from the halfedge into it in the face
-   * (opposite(next(g)) is the next halfedge into it), the sources are corner
-   * i-1, corner i+1, then four vertices of the ring: around corner 0 the
-   * points 1, 0, 3, 7, around corner 1 9, 6, 2, 1, around corner 2 7, 10, 11, 9.
-   */
-  static std::array<Point, 12> triangle_control_points(const Patch& patch)
-  {
-    const Patch_mesh& m = patch.mesh;
-    static const int corner_point[3] = {4, 5, 8};
-    static const int ring[3][4] = {{1, 0, 3, 7}, {9, 6, 2, 1}, {7, 10, 11, 9}};
-    std::array<Point, 12> points;
-    Patch_halfedge into = patch.h0;
-    for(int i = 0; i < 3; ++i, into = m.next(into)) {
-      points[corner_point[i]] = m.point(m.target(into));
-      Patch_halfedge g = m.opposite(m.next(into)); // from corner i+1
-      for(int k = 0; k < 4; ++k) {
-        g = m.opposite(m.next(g));
-        points[ring[i][k]] = m.point(m.source(g));
-      }
-    }
-    return points;
-  }
-
   template <std::size_t N>
   static Exact_sample combine(const std::array<Point, N>& points, const Patch_weights<FT, N>& w)
   {
@@ -422,12 +328,35 @@ private:
     return s;
   }
 
-  static Exact_sample evaluate_regular(const Patch& patch, const FT& u, const FT& v)
+  static auto basis_weights(const FT& u, const FT& v)
   {
     if constexpr(quads)
-      return combine(quad_control_points(patch), bspline_patch_weights(u, v));
+      return bspline_patch_weights(u, v);
     else
-      return combine(triangle_control_points(patch), box_spline_patch_weights(u, v));
+      return box_spline_patch_weights(u, v);
+  }
+
+  /*
+   * The limit at (u, v) of the face of h0 in `mesh` without refining it:
+   * a regular patch from its basis, and, in a floating-point kernel, a
+   * patch with one extraordinary corner from Stam's eigenbasis (exact
+   * kernels refine instead, to stay exact); nothing otherwise.
+   */
+  template <class Source>
+  std::optional<Exact_sample> evaluate_directly(const Source& mesh,
+                                                typename boost::graph_traits<Source>::halfedge_descriptor h0,
+                                                const FT& u, const FT& v, int depth) const
+  {
+    const internal::Patch_points<Source, quads> patch(mesh, h0);
+    if(patch.is_regular())
+      return combine(patch.control_points(), basis_weights(u, v));
+    if constexpr(std::is_floating_point_v<FT>) {
+      if(!eigenbasis)
+        return std::nullopt;
+      if(const auto [corner, n] = patch.extraordinary_corner(); n > 0)
+        return evaluate_around(mesh, h0, corner, n, u, v, depth);
+    }
+    return std::nullopt;
   }
 
   // the corner of the patch's face at (u, v), if (u, v) is a corner; -1 otherwise
@@ -437,6 +366,22 @@ private:
     if(!quads && u0 && v1)
       return 2;
     return u0 && v0 ? 0 : u1 && v0 ? 1 : u1 && v1 ? 2 : u0 && v1 ? 3 : -1;
+  }
+
+  /*
+   * Whether corner i of the patch's face is an inner vertex of the regular
+   * valence, or under Catmull-Clark a border vertex with two faces: the
+   * children around it become regular patches, which give the derivatives
+   * there too (the limit masks do not).
+   */
+  static bool is_ordinary_corner(const Patch& patch, int i)
+  {
+    Patch_halfedge h = patch.h0;
+    for(int k = 0; k < i; ++k)
+      h = patch.mesh.next(h);
+    const auto corner = patch.mesh.target(h);
+    const std::size_t valence = patch.mesh.degree(corner);
+    return patch.mesh.is_border(corner) ? quads && valence == 3 : valence == (quads ? 4u : 6u);
   }
 
   // the limit position and normal of corner i of the patch's face (the masks of the analysis)
@@ -453,39 +398,59 @@ private:
                            .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
                              "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
                            .first;
-    limit_normals(patch.mesh, m_mask, normals);
+    // the evaluator keeps the masks of the analysis per configuration
+    const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
+    m_eigenbases->limit.limit_normals(patch.mesh, normals);
     s.normal = normals[corner];
-    project_to_limit(patch.mesh, m_mask);
+    m_eigenbases->limit.project_to_limit(patch.mesh);
     s.position = patch.mesh.point(corner);
     return s;
   }
 
-  /*
-   * Refines the patch one level and returns the child of its face (face 0)
-   * in sub-quad `sub_quad` (-1: none) whose box starts at `box_min` and that
-   * has a corner at `anchor`, with the halfedge into that corner: the
-   * child's corner 0 (the parameters are dyadic, exact in double).
-   */
-  Child refine_and_find(Patch& patch, int sub_quad, std::array<double, 2> box_min, std::array<double, 2> anchor) const
+  // where a child lies in its parent's face: the sub-quad (-1: none), the
+  // corner of its box and its corner 0 (the parameters are dyadic, exact in double)
+  struct Child_place
+  {
+    int sub_quad;
+    std::array<double, 2> box_min, anchor;
+  };
+
+  // refines the patch one level, each new face with its origin
+  using Origin_map = typename Patch_mesh::template Property_map<typename Patch_mesh::Face_index, Face_origin>;
+  Origin_map refine(Patch_mesh& mesh) const
   {
     auto origins =
-      patch.mesh.template add_property_map<typename Patch_mesh::Face_index, Face_origin>("f:cgal_subdiv_limit_origin")
-        .first;
+      mesh.template add_property_map<typename Patch_mesh::Face_index, Face_origin>("f:cgal_subdiv_limit_origin").first;
     Carried_data<Patch_mesh, FT> data;
     data.face_origin_map(origins);
-    subdivide(patch.mesh, m_mask, parameters::carried_data(data));
-    for(const auto g : patch.mesh.faces()) {
+    subdivide(mesh, m_mask, parameters::carried_data(data));
+    return origins;
+  }
+
+  // the halfedge into corner 0 of the child of the refined patch's face (face 0) at `place`
+  static Patch_halfedge find_child(const Patch_mesh& mesh, const Origin_map& origins, const Child_place& place)
+  {
+    for(const auto g : mesh.faces()) {
       const Face_origin& origin = origins[g];
       const CGAL::Bbox_2 box = origin.box();
-      if(origin.face != 0 || origin.sub_quad != sub_quad || box.xmin() != box_min[0] || box.ymin() != box_min[1])
+      if(origin.face != 0 || origin.sub_quad != place.sub_quad || box.xmin() != place.box_min[0] ||
+         box.ymin() != place.box_min[1])
         continue;
-      Patch_halfedge h = patch.mesh.halfedge(g);
-      for(int i = 0; i < origin.corners; ++i, h = patch.mesh.next(h))
-        if(origin.uv[i][0] == anchor[0] && origin.uv[i][1] == anchor[1])
-          return Child{std::move(patch.mesh), h};
+      Patch_halfedge h = mesh.halfedge(g);
+      for(int i = 0; i < origin.corners; ++i, h = mesh.next(h))
+        if(origin.uv[i][0] == place.anchor[0] && origin.uv[i][1] == place.anchor[1])
+          return h;
     }
     internal::refuse(internal::Message() << "Limit_surface: no child holds the parameter (an internal error)");
-    return Child{};
+    return Patch_halfedge();
+  }
+
+  // refines the patch one level and returns the child of its face at `place`
+  Child refine_and_find(Patch& patch, const Child_place& place) const
+  {
+    const Origin_map origins = refine(patch.mesh);
+    const Patch_halfedge h = find_child(patch.mesh, origins, place);
+    return Child{std::move(patch.mesh), h};
   }
 
   /*
@@ -497,7 +462,7 @@ private:
    */
   struct Child_parameters
   {
-    std::array<double, 2> box_min, anchor;
+    Child_place place;
     FT u, v;
     FT scale;
   };
@@ -505,23 +470,199 @@ private:
   {
     const FT half = FT(1) / FT(2);
     if(!quads && u < half && v < half && u + v > half) // the middle triangle
-      return {{0, 0}, {0.5, 0.5}, FT(1) - FT(2) * u, FT(1) - FT(2) * v, FT(-2)};
+      return {{-1, {0, 0}, {0.5, 0.5}}, FT(1) - FT(2) * u, FT(1) - FT(2) * v, FT(-2)};
     // a quarter of a quad; a corner triangle, u >= 1/2 the one at corner 1
     const FT a = u < half ? FT(0) : half, b = v < half || (!quads && a == half) ? FT(0) : half;
     const std::array<double, 2> corner{CGAL::to_double(a), CGAL::to_double(b)};
-    return {corner, corner, FT(2) * (u - a), FT(2) * (v - b), FT(2)};
+    return {{-1, corner, corner}, FT(2) * (u - a), FT(2) * (v - b), FT(2)};
+  }
+
+  // the regular children of a patch whose corner 0 is extraordinary, as `child_parameters` places them
+  static const std::array<Child_place, 3>& regular_children()
+  {
+    static const std::array<Child_place, 3> places =
+      quads
+        ? std::array<Child_place, 3>{{{-1, {0.5, 0}, {0.5, 0}}, {-1, {0.5, 0.5}, {0.5, 0.5}}, {-1, {0, 0.5}, {0, 0.5}}}}
+        : std::array<Child_place, 3>{{{-1, {0.5, 0}, {0.5, 0}}, {-1, {0, 0.5}, {0, 0.5}}, {-1, {0, 0}, {0.5, 0.5}}}};
+    return places;
+  }
+  static std::size_t regular_child_index(const Child_place& place)
+  {
+    const auto& places = regular_children();
+    for(std::size_t k = 0; k < places.size(); ++k)
+      if(places[k].box_min == place.box_min && places[k].anchor == place.anchor)
+        return k;
+    internal::refuse(internal::Message() << "Limit_surface: not a regular child (an internal error)");
+    return 0;
+  }
+  // whether (u, v) is in the child at corner 0 (the one that keeps the extraordinary vertex)
+  static bool in_corner_child(const FT& u, const FT& v)
+  {
+    const FT half = FT(1) / FT(2);
+    return u < half && v < half && (quads || !(u + v > half));
+  }
+
+  /*
+   * The eigenbasis of a patch with one extraordinary corner of valence n:
+   * its local subdivision matrix and its children's, read off the
+   * refinement of the patch by the mask itself, three control points at a
+   * time set to the unit points (so the matrices are the mask's weights).
+   */
+  Eigenbasis build_eigenbasis(const Patch& patch) const
+  {
+    using Points = internal::Patch_points<Patch_mesh, quads>;
+    const auto ring = Points(patch.mesh, patch.h0).ring_vertices();
+    const Eigen::Index K = static_cast<Eigen::Index>(ring.size());
+    constexpr Eigen::Index N = quads ? 16 : 12;
+    Eigen::MatrixXd A(K, K);
+    std::array<Eigen::MatrixXd, 3> children;
+    children.fill(Eigen::MatrixXd(N, K));
+    for(Eigen::Index first = 0; first < K; first += 3) {
+      Patch_mesh mesh = patch.mesh;
+      for(Eigen::Index j = 0; j < K; ++j) {
+        const auto unit = [&](Eigen::Index d) { return j == first + d ? FT(1) : FT(0); };
+        mesh.point(ring[j]) = Point(unit(0), unit(1), unit(2));
+      }
+      const Origin_map origins = refine(mesh);
+      const auto set_columns = [&](Eigen::MatrixXd& matrix, Eigen::Index row, const Point& p) {
+        for(Eigen::Index d = 0; d < 3 && first + d < K; ++d)
+          matrix(row, first + d) = CGAL::to_double(p[int(d)]);
+      };
+      const auto child_ring = Points(mesh, find_child(mesh, origins, {-1, {0, 0}, {0, 0}})).ring_vertices();
+      CGAL_assertion(child_ring.size() == ring.size());
+      for(Eigen::Index r = 0; r < K; ++r)
+        set_columns(A, r, mesh.point(child_ring[r]));
+      for(std::size_t k = 0; k < 3; ++k) {
+        const auto points = Points(mesh, find_child(mesh, origins, regular_children()[k])).control_points();
+        for(Eigen::Index r = 0; r < N; ++r)
+          set_columns(children[k], r, points[r]);
+      }
+    }
+    return Eigenbasis(A, children);
+  }
+
+  // the eigenbasis of valence n, built from the patch at h0 of `mesh` the first time; null if not usable
+  template <class Source>
+  const Eigenbasis* eigenbasis_of(std::size_t n, const Source& mesh,
+                                  typename boost::graph_traits<Source>::halfedge_descriptor h0) const
+  {
+    const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
+    std::unique_ptr<const Eigenbasis>& slot = m_eigenbases->by_valence[n];
+    if(!slot)
+      slot = std::make_unique<const Eigenbasis>(build_eigenbasis(local_patch(mesh, h0)));
+    return slot->usable() ? slot.get() : nullptr;
+  }
+
+  /*
+   * The parameters (s, t) = L (u, v) + o of the face seen from its corner
+   * i (the corner at (0, 0), the next one at (1, 0)): the derivatives along
+   * u and v are L^T those along s and t, and the second derivatives
+   * L^T H L.
+   */
+  struct Turn
+  {
+    std::array<std::array<int, 2>, 2> L;
+    std::array<int, 2> o;
+  };
+  static Turn turn_to_corner(int i)
+  {
+    if constexpr(quads) {
+      static const Turn turns[4] = {{{{{1, 0}, {0, 1}}}, {0, 0}},
+                                    {{{{0, 1}, {-1, 0}}}, {0, 1}},
+                                    {{{{-1, 0}, {0, -1}}}, {1, 1}},
+                                    {{{{0, -1}, {1, 0}}}, {1, 0}}};
+      return turns[i];
+    } else {
+      static const Turn turns[3] = {
+        {{{{1, 0}, {0, 1}}}, {0, 0}}, {{{{0, 1}, {-1, -1}}}, {0, 1}}, {{{{-1, -1}, {1, 0}}}, {1, 0}}};
+      return turns[i];
+    }
+  }
+
+  // Stam's evaluation of the patch at h0 seen from its extraordinary corner `corner`, of valence n
+  template <class Source>
+  std::optional<Exact_sample> evaluate_around(const Source& mesh,
+                                              typename boost::graph_traits<Source>::halfedge_descriptor h0, int corner,
+                                              std::size_t n, const FT& u, const FT& v, int depth) const
+  {
+    for(int k = 0; k < corner; ++k)
+      h0 = next(h0, mesh);
+    const Turn turn = turn_to_corner(corner);
+    const auto& L = turn.L;
+    std::optional<Exact_sample> s =
+      evaluate_with_eigenbasis(mesh, h0, n, FT(L[0][0]) * u + FT(L[0][1]) * v + FT(turn.o[0]),
+                               FT(L[1][0]) * u + FT(L[1][1]) * v + FT(turn.o[1]), depth);
+    if(!s || corner == 0)
+      return s;
+    const Vector ds = s->du, dt = s->dv, dss = s->duu, dst = s->duv, dtt = s->dvv;
+    const auto second = [&](int a, int b) {
+      return dss * FT(L[0][a] * L[0][b]) + dst * FT(L[0][a] * L[1][b] + L[1][a] * L[0][b]) +
+             dtt * FT(L[1][a] * L[1][b]);
+    };
+    s->du = ds * FT(L[0][0]) + dt * FT(L[1][0]);
+    s->dv = ds * FT(L[0][1]) + dt * FT(L[1][1]);
+    s->duu = second(0, 0);
+    s->duv = second(0, 1);
+    s->dvv = second(1, 1);
+    return s;
+  }
+
+  /*
+   * Stam's evaluation of the patch at h0 of `mesh`, whose corner 0 is its
+   * one extraordinary vertex, of valence n: (u, v) lies in a regular child
+   * of the patch `level` levels down towards the corner, and that child's
+   * control points are a combination of the eigen-coefficients of the
+   * patch's (`Stam_eigenbasis`). Nothing at the corner itself (its limit
+   * masks give it), below `max_depth`, or if the eigenbasis is not usable.
+   */
+  template <class Source>
+  std::optional<Exact_sample> evaluate_with_eigenbasis(const Source& mesh,
+                                                       typename boost::graph_traits<Source>::halfedge_descriptor h0,
+                                                       std::size_t n, FT u, FT v, int depth) const
+  {
+    if(u == FT(0) && v == FT(0))
+      return std::nullopt;
+    const Eigenbasis* basis = eigenbasis_of(n, mesh, h0);
+    if(!basis)
+      return std::nullopt;
+    int level = 0;
+    for(; in_corner_child(u, v); ++level, u *= FT(2), v *= FT(2))
+      if(depth + level >= max_depth)
+        return std::nullopt;
+    const Child_parameters c = child_parameters(u, v);
+    // the control points from the extraordinary vertex's (ring[0]): the
+    // derivative weights sum to 0 only up to rounding, times 2^level
+    const auto ring = internal::Patch_points<Source, quads>(mesh, h0).ring_vertices();
+    Eigen::MatrixXd points(static_cast<Eigen::Index>(ring.size()), 3);
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    const Point origin = get(vpm, ring[0]);
+    for(Eigen::Index r = 0; r < points.rows(); ++r) {
+      const Vector p = get(vpm, ring[r]) - origin;
+      points.row(r) << p.x(), p.y(), p.z();
+    }
+    const auto values =
+      basis->evaluate(basis->coefficients(points), regular_child_index(c.place), level, basis_weights(c.u, c.v));
+    const auto vector = [](const Eigen::RowVector3d& w, const FT& factor) { return Vector(w(0), w(1), w(2)) * factor; };
+    Exact_sample s;
+    s.position = origin + vector(values[0], FT(1));
+    s.du = vector(values[1], c.scale);
+    s.dv = vector(values[2], c.scale);
+    s.duu = vector(values[3], c.scale * c.scale);
+    s.duv = vector(values[4], c.scale * c.scale);
+    s.dvv = vector(values[5], c.scale * c.scale);
+    return s;
   }
 
   // the limit at (u, v) of the patch's face, `depth` levels below the mesh
   Exact_sample evaluate_face(Patch patch, const FT& u, const FT& v, int depth) const
   {
-    if(is_regular(patch))
-      return evaluate_regular(patch, u, v);
+    if(std::optional<Exact_sample> s = evaluate_directly(patch.mesh, patch.h0, u, v, depth))
+      return *s;
     const int corner = corner_at(u, v);
-    if(corner >= 0 || depth >= max_depth)
+    if((corner >= 0 && !is_ordinary_corner(patch, corner)) || depth >= max_depth)
       return evaluate_at_corner(std::move(patch), corner >= 0 ? corner : nearest_corner(u, v));
     const Child_parameters c = child_parameters(u, v);
-    const Child child = refine_and_find(patch, -1, c.box_min, c.anchor);
+    const Child child = refine_and_find(patch, c.place);
     Exact_sample s = evaluate_face(local_patch(child.mesh, child.face_h0), c.u, c.v, depth + 1);
     // d/du = scale d/du' in the child's parameters
     s.du = s.du * c.scale;
@@ -559,8 +700,19 @@ private:
     return out;
   }
 
+  using Patch_mask = decltype(std::declval<const Mask&>().template rebind<Patch_mesh, FT>());
+  // what evaluations share: the eigenbases by valence, the limit masks (under one lock)
+  struct Eigenbases
+  {
+    explicit Eigenbases(const Patch_mask& mask) : limit(mask) {}
+    std::mutex mutex;
+    Limit_evaluator<Patch_mask> limit;
+    std::map<std::size_t, std::unique_ptr<const Eigenbasis>> by_valence;
+  };
+
   const PolygonMesh* m_mesh;
-  decltype(std::declval<const Mask&>().template rebind<Patch_mesh, FT>()) m_mask;
+  Patch_mask m_mask;
+  std::shared_ptr<Eigenbases> m_eigenbases;
 };
 
 } // namespace Subdiv

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_LIMIT_STAM_EIGENBASIS_H
+#define CGAL_SUBDIV_LIMIT_STAM_EIGENBASIS_H
+
+/// \file Stam_eigenbasis.h
+/// Stam's evaluation of a patch with one extraordinary corner (Stam 1998
+/// for Catmull-Clark, 1999 for Loop) from the eigenstructure of its local
+/// subdivision matrix: no mesh involved, only the matrices.
+
+#include <CGAL/Subdiv/limit/patch_basis.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <Eigen/SVD>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/*
+ * A patch of K control points (the 1-ring of a face whose corner 0 is the
+ * one extraordinary vertex, in the order of `Patch_points::ring_vertices()`)
+ * refines into the same shape at corner 0, with control points A c (A is
+ * K x K), and three regular children whose N control points are P_k c
+ * (N x K). With A = V diag(lambda) V^-1, the limit over child k of the
+ * patch L levels down is
+ *
+ *   sum_i lambda_i^L (b(u, v) . (P_k V)_i) (V^-1 c)_i,
+ *
+ * b the regular patch's basis: a point near the corner costs as much as
+ * any other, with no refinement (Stam's eigenbasis functions, tabulated
+ * here as the matrices P_k V rather than as polynomials).
+ *
+ * A is taken as diagonalisable when its eigenvalues are real and its
+ * eigenvector matrix has a condition number below 1e6 (so that the
+ * evaluation loses at most about 6 of the 16 digits of a double). Measured
+ * at valences 3 to 16 (test/limit_surface_test.cpp): Catmull-Clark 160 to
+ * 3.8e3 (valence 3), Loop 42 to 1.3e4 (valence 9); Loop at valence 3 is
+ * defective (its triple eigenvalues 1/8 and 1/16), `usable()` is false
+ * and the caller refines instead.
+ */
+template <std::size_t N>
+class Stam_eigenbasis
+{
+public:
+  using Matrix = Eigen::MatrixXd;
+
+  Stam_eigenbasis(const Matrix& A, const std::array<Matrix, 3>& children)
+  {
+    const Eigen::EigenSolver<Matrix> solver(A);
+    if(solver.info() != Eigen::Success)
+      return;
+    // the real block-diagonal form: a 2 x 2 block for a complex pair, which
+    // a repeated real eigenvalue may come out as, with an imaginary part of
+    // the order of the rounding
+    const Matrix D = solver.pseudoEigenvalueMatrix();
+    const double scale = D.cwiseAbs().maxCoeff();
+    m_lambda = D.diagonal();
+    if((D - Matrix(m_lambda.asDiagonal())).cwiseAbs().maxCoeff() > 1e-12 * scale)
+      return;
+    const Matrix V = solver.pseudoEigenvectors();
+    const Eigen::JacobiSVD<Matrix> svd(V);
+    const auto& sigma = svd.singularValues();
+    m_condition = sigma(0) / sigma(sigma.size() - 1);
+    if(!(m_condition < 1e6))
+      return;
+    m_inverse_vectors = V.inverse();
+    for(std::size_t k = 0; k < 3; ++k)
+      m_children[k] = children[k] * V;
+    m_usable = true;
+  }
+
+  /// whether the matrix is diagonalisable in the reals, with a well-conditioned eigenbasis
+  bool usable() const { return m_usable; }
+  /// the condition number of the eigenvector matrix (infinite if not computed)
+  double condition() const { return m_condition; }
+  const Eigen::VectorXd& eigenvalues() const { return m_lambda; }
+
+  /// the coordinates of the control points (one per row) in the eigenbasis
+  Matrix coefficients(const Matrix& control_points) const { return m_inverse_vectors * control_points; }
+
+  /*
+   * The limit over child `k` of the patch `level` levels down from the one
+   * whose eigen-coefficients are `coefficients`, at the child's parameters
+   * of weights `w`: the position, then d/du, d/dv, d2/du2, d2/dudv, d2/dv2
+   * in the child's parameters times 2^level (4^level for the second
+   * derivatives), i.e. in the parameters of the patch `level` levels up
+   * (up to the child's own factor).
+   */
+  std::array<Eigen::RowVector3d, 6>
+  evaluate(const Matrix& coefficients, std::size_t k, int level, const Patch_weights<double, N>& w) const
+  {
+    const auto eigen_weights = [&](const std::array<double, N>& basis, double factor) {
+      Eigen::RowVectorXd row = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(basis.data()) * m_children[k];
+      for(Eigen::Index i = 0; i < row.size(); ++i)
+        row(i) *= std::pow(factor * m_lambda(i), level);
+      return Eigen::RowVector3d(row * coefficients);
+    };
+    return {eigen_weights(w.position, 1), eigen_weights(w.du, 2), eigen_weights(w.dv, 2),
+            eigen_weights(w.duu, 4),      eigen_weights(w.duv, 4), eigen_weights(w.dvv, 4)};
+  }
+
+private:
+  bool m_usable = false;
+  double m_condition = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd m_lambda;
+  Matrix m_inverse_vectors;
+  std::array<Matrix, 3> m_children;
+};
+
+} // namespace internal
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_LIMIT_STAM_EIGENBASIS_H

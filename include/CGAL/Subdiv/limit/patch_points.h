@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026 CGAL Subdiv contributors
+#ifndef CGAL_SUBDIV_LIMIT_PATCH_POINTS_H
+#define CGAL_SUBDIV_LIMIT_PATCH_POINTS_H
+
+/// \file patch_points.h
+/// The control points of a face's patch, read from any FaceGraph around
+/// one halfedge (the one into the face's corner 0): whether the patch is
+/// regular or has one extraordinary corner, the 16 (12) points of a
+/// regular quad (triangle) as `patch_basis.h` numbers them, and the
+/// vertices of the 1-ring in an order fixed by the topology alone, which
+/// the eigenbasis of `Stam_eigenbasis.h` is expressed in.
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Subdiv {
+namespace internal {
+
+/// the patches of Catmull-Clark (`Quads`) or of Loop around a halfedge `h0` of `Mesh`
+template <class Mesh, bool Quads>
+class Patch_points
+{
+  using GT = boost::graph_traits<Mesh>;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
+
+public:
+  using Point = typename boost::property_traits<Vpm>::value_type;
+  // the valence of a regular vertex, and the corners of a regular face
+  static constexpr std::size_t regular_valence = Quads ? 4 : 6;
+  static constexpr std::size_t face_corners = Quads ? 4 : 3;
+
+  Patch_points(const Mesh& mesh, halfedge_descriptor h0) : m(mesh), h0(h0), vpm(get(CGAL::vertex_point, mesh)) {}
+
+  // the side of the quad on the border (the edge from corner i to corner i+1), or -1 if none
+  int border_side() const
+  {
+    halfedge_descriptor h = next(h0, m);
+    for(int i = 0; i < 4; ++i, h = next(h, m))
+      if(CGAL::is_border(opposite(h, m), m))
+        return i;
+    return -1;
+  }
+
+  /*
+   * Whether the face and the faces around its corners are all quads
+   * (triangles) and its corners inner vertices of valence 4 (6); under
+   * Catmull-Clark, also a quad with one side on the border, whose two ends
+   * have two faces, the other corners being inner of valence 4.
+   */
+  bool is_regular() const
+  {
+    const int side = Quads ? border_side() : -1;
+    int i = 0;
+    for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
+      const vertex_descriptor corner = target(h, m);
+      // corner i ends side i - 1 (from corner i - 1) and starts side i
+      const bool on_border_side = side >= 0 && (side == i || (side + 1) % 4 == i);
+      ++i;
+      if(on_border_side ? valence(corner) != 3 || !is_border(corner)
+                        : valence(corner) != regular_valence || is_border(corner))
+        return false;
+      if(!faces_around_are_regular(h))
+        return false;
+    }
+    return true;
+  }
+
+  /*
+   * The patch's one extraordinary corner (its index from corner 0) and its
+   * valence n: the face and every face around its corners have
+   * `face_corners` corners, every corner is an inner vertex, one has another
+   * valence than the regular one and the others have the regular one, and
+   * the 1-ring has as many vertices as that shape has (2 n + 8 for a quad,
+   * n + 6 for a triangle: none is met twice); {0, 0} if there is none.
+   */
+  std::pair<int, std::size_t> extraordinary_corner() const
+  {
+    int index = -1, i = 0;
+    std::size_t n = 0;
+    for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
+      const vertex_descriptor corner = target(h, m);
+      if(is_border(corner) || !faces_around_are_regular(h))
+        return {0, 0};
+      if(const std::size_t k = valence(corner); k != regular_valence) {
+        if(index >= 0)
+          return {0, 0};
+        index = i;
+        n = k;
+      }
+      ++i;
+    }
+    if(index < 0 || ring_vertices().size() != (Quads ? 2 * n + 8 : n + 6))
+      return {0, 0};
+    return {index, n};
+  }
+
+  /*
+   * The vertices of every face that shares a vertex with the face, each
+   * once, in an order fixed by the topology around h0: corner by corner
+   * from corner 0, the faces around the corner from the face on (turning
+   * from the halfedge into the corner g to opposite(next(g))), and in each
+   * face its vertices from that corner on. Empty if a corner is on the
+   * border.
+   */
+  std::vector<vertex_descriptor> ring_vertices() const
+  {
+    std::vector<vertex_descriptor> ring;
+    halfedge_descriptor into = h0;
+    do {
+      halfedge_descriptor g = into;
+      do {
+        if(CGAL::is_border(g, m))
+          return {};
+        for(const vertex_descriptor w : CGAL::vertices_around_face(g, m))
+          if(std::find(ring.begin(), ring.end(), w) == ring.end())
+            ring.push_back(w);
+        g = opposite(next(g, m), m);
+      } while(g != into);
+      into = next(into, m);
+    } while(into != h0);
+    return ring;
+  }
+
+  /*
+   * The 16 control points of a regular quad, numbered as
+   * `bspline_patch_weights()` takes them (point 4 r + c in row r along v,
+   * column c along u; corner i of the face at 5, 6, 10, 9). Across the edge
+   * from corner i to corner i+1 lie the neighbours of both, and the diagonal
+   * neighbour of corner i is the far corner of the face beyond. A side on
+   * the border has nothing beyond: its row (column) is extrapolated, p =
+   * 2 b - q from the border point b and the inner one q behind it, so that
+   * the B-spline refines as Catmull-Clark's border rules do (a border
+   * vertex 3/4, 1/8, 1/8; a border edge its midpoint) and its side is the
+   * cubic B-spline of the border points.
+   */
+  std::array<Point, 16> quad_control_points() const
+  {
+    std::array<halfedge_descriptor, 4> h;
+    h[0] = h0;
+    for(int i = 1; i < 4; ++i)
+      h[i] = next(h[i - 1], m);
+    const int side = border_side();
+    // by corner i: its point, the neighbours across the edge to corner i+1
+    // (next to corner i, then to corner i+1), and its diagonal neighbour
+    static const int corner_point[4] = {5, 6, 10, 9};
+    static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
+    static const int diagonal[4] = {0, 3, 15, 12};
+    std::array<Point, 16> points;
+    for(int i = 0; i < 4; ++i) {
+      points[corner_point[i]] = get(vpm, target(h[i], m));
+      if(i == side) // nothing beyond
+        continue;
+      const halfedge_descriptor beyond = opposite(h[(i + 1) % 4], m); // across the edge from corner i to corner i+1
+      points[across[i][0]] = get(vpm, target(next(beyond, m), m));
+      points[across[i][1]] = get(vpm, target(next(next(beyond, m), m), m));
+      if(side < 0 || (side + 1) % 4 != i) // corner i's diagonal face is not beyond the border
+        points[diagonal[i]] = get(vpm, source(prev(opposite(next(beyond, m), m), m), m));
+    }
+    if(side >= 0)
+      extrapolate_beyond(side, points);
+    return points;
+  }
+
+  /*
+   * The 12 control points of a regular triangle, numbered as
+   * `box_spline_patch_weights()` takes them (corner 0 at 4, 1 at 5, 2 at 8).
+   * Turning around corner i from the halfedge into it in the face
+   * (opposite(next(g)) is the next halfedge into it), the sources are corner
+   * i-1, corner i+1, then four vertices of the ring: around corner 0 the
+   * points 1, 0, 3, 7, around corner 1 9, 6, 2, 1, around corner 2 7, 10, 11, 9.
+   */
+  std::array<Point, 12> triangle_control_points() const
+  {
+    static const int corner_point[3] = {4, 5, 8};
+    static const int ring[3][4] = {{1, 0, 3, 7}, {9, 6, 2, 1}, {7, 10, 11, 9}};
+    std::array<Point, 12> points;
+    halfedge_descriptor into = h0;
+    for(int i = 0; i < 3; ++i, into = next(into, m)) {
+      points[corner_point[i]] = get(vpm, target(into, m));
+      halfedge_descriptor g = opposite(next(into, m), m); // from corner i+1
+      for(int k = 0; k < 4; ++k) {
+        g = opposite(next(g, m), m);
+        points[ring[i][k]] = get(vpm, source(g, m));
+      }
+    }
+    return points;
+  }
+
+  /// the control points of a regular patch, as the scheme's basis numbers them
+  auto control_points() const
+  {
+    if constexpr(Quads)
+      return quad_control_points();
+    else
+      return triangle_control_points();
+  }
+
+private:
+  std::size_t valence(vertex_descriptor v) const { return CGAL::halfedges_around_target(v, m).size(); }
+  bool is_border(vertex_descriptor v) const { return bool(CGAL::is_border(v, m)); }
+
+  // whether every face around the target of h has `face_corners` corners
+  bool faces_around_are_regular(halfedge_descriptor h) const
+  {
+    for(const auto g : CGAL::faces_around_target(h, m))
+      if(g != GT::null_face() && CGAL::halfedges_around_face(halfedge(g, m), m).size() != face_corners)
+        return false;
+    return true;
+  }
+
+  // the points beyond border side `side` of the grid: p = 2 b - q
+  static void extrapolate_beyond(int side, std::array<Point, 16>& points)
+  {
+    // point (r, c) of the grid seen from the side: row 0 beyond the border,
+    // row 1 on it, row 2 inside
+    const auto at = [side](int r, int c) {
+      switch(side) {
+        case 0:
+          return 4 * r + c; // bottom
+        case 1:
+          return 4 * c + (3 - r); // right
+        case 2:
+          return 4 * (3 - r) + (3 - c); // top
+        default:
+          return 4 * (3 - c) + r; // left
+      }
+    };
+    for(int c = 0; c < 4; ++c)
+      points[at(0, c)] = points[at(1, c)] + (points[at(1, c)] - points[at(2, c)]);
+  }
+
+  const Mesh& m;
+  halfedge_descriptor h0;
+  Vpm vpm;
+};
+
+} // namespace internal
+} // namespace Subdiv
+} // namespace CGAL
+
+#endif // CGAL_SUBDIV_LIMIT_PATCH_POINTS_H
