@@ -886,3 +886,95 @@ subdiv_cli_test(demo_analysis_summary ARGS demo --output-dir @WORK@/demo TIMEOUT
   FILE @WORK@/demo/index.md
   FILE_REGEX "## Analysis.*\\| catmull-clark \\| 3\\.\\.8 \\| 0\\.4101, 0\\.5000, [^\n]* \\| C1 at 3\\.\\.8 \\|")
 endif()
+
+# === cgal-subdiv evaluate (CGAL/Subdiv/limit/) =================================
+if(TARGET cgal-subdiv)
+set(locations ${SUBDIV_CLI_DIR}/locations)
+set(grid ${SUBDIV_CLI_DIR}/grid_4x4.off)
+
+subdiv_cli_test(evaluate_help ARGS evaluate --help
+  STDOUT_REGEX "--scheme.*--at LOCATIONS.*FACE U V.*FACE CORNER U V.*--json.*x y z dux duy duz dvx dvy dvz nx ny nz.*Exit status")
+subdiv_cli_test(help_lists_evaluate ARGS --help STDOUT_REGEX "\n  evaluate +")
+
+# a flat grid of quads: face 5 (a regular patch) is the plane (1 + u, 1 + v, 0),
+# du = (1, 0, 0), dv = (0, 1, 0) (to rounding: the B-spline's weights in
+# double), z and the normal (0, 0, 1) exactly; to stdout or to -o
+set(near "-?[0-9.e-]+")
+set(grid_face_5 "1.2(5|49999999999999[0-9]*) 1.5 0 ${near} ${near} 0 ${near} ${near} 0 0 0 1")
+subdiv_cli_test(evaluate_grid_stdout ARGS evaluate ${grid} --scheme catmull-clark --at ${locations}/grid_face_5.txt
+  STDOUT_REGEX "^${grid_face_5}\n$")
+subdiv_cli_test(evaluate_grid_output ARGS evaluate ${grid} --scheme catmull-clark --at ${locations}/grid_face_5.txt
+  -o @WORK@/out.txt STDOUT_REGEX "^$" OUTPUT @WORK@/out.txt POINTS 1 FILE @WORK@/out.txt FILE_REGEX "^${grid_face_5}\n$")
+
+# values against hand-derived ones and `surface --limit` (test/cli/limit_checks.py)
+function(subdiv_limit_check name)
+  if(NOT Python3_Interpreter_FOUND)
+    return()
+  endif()
+  add_test(NAME cli_limit_${name}
+           COMMAND ${Python3_EXECUTABLE} ${SUBDIV_CLI_DIR}/limit_checks.py $<TARGET_FILE:cgal-subdiv> ${SUBDIV_CLI_DIR}
+                   ${CMAKE_CURRENT_BINARY_DIR}/cli/limit_${name} ${name})
+  subdiv_timeout(timeout 60)
+  set_tests_properties(cli_limit_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
+endfunction()
+foreach(check IN ITEMS cc_cube_corners cc_cube_centres cc_grid_plane loop_tetra cc_sub_quads json_layout)
+  subdiv_limit_check(${check})
+endforeach()
+
+# bad locations: one line naming LOCATIONS and the line, exit 1, no output
+function(subdiv_evaluate_error name mesh scheme file regex)
+  subdiv_cli_error(evaluate_${name} 1 "${file}:${regex}"
+    ARGS evaluate ${mesh} --scheme ${scheme} --at ${locations}/${file} -o @WORK@/out.txt)
+endfunction()
+subdiv_evaluate_error(face_out_of_range ${cube} catmull-clark face_out_of_range.txt
+  "3: face 12 out of range \\(the mesh has 6 faces\\)\n$")
+subdiv_evaluate_error(face_negative ${cube} catmull-clark face_negative.txt
+  "2: face -1 out of range \\(the mesh has 6 faces\\)\n$")
+subdiv_evaluate_error(face_not_whole ${cube} catmull-clark face_not_whole.txt "2: FACE '1.5' is not a whole number\n$")
+subdiv_evaluate_error(u_outside ${cube} catmull-clark u_outside.txt
+  "3: u = 1.5 is outside the domain of face 2 \\(\\[0, 1\\]\\^2\\)\n$")
+subdiv_evaluate_error(v_negative ${tetra} loop v_negative.txt
+  "1: v = -1/8 is outside the domain of face 0 \\(u, v >= 0, u \\+ v <= 1\\)\n$")
+subdiv_evaluate_error(outside_triangle ${tetra} loop outside_triangle.txt
+  "2: u \\+ v = 1.25 is outside the domain of face 0 \\(u, v >= 0, u \\+ v <= 1\\)\n$")
+subdiv_evaluate_error(corner_for_quad ${cube} catmull-clark corner_for_quad.txt
+  "1: face 0 is a quad: give FACE U V, without a CORNER\n$")
+subdiv_evaluate_error(corner_missing ${tetra} catmull-clark corner_missing.txt
+  "2: face 1 has 3 corners: give FACE CORNER U V, its sub-quad at CORNER\n$")
+subdiv_evaluate_error(corner_out_of_range ${tetra} catmull-clark corner_out_of_range.txt
+  "1: face 0 has no corner 3 \\(its corners are 0 to 2\\)\n$")
+subdiv_evaluate_error(corner_for_loop ${tetra} loop corner_for_loop.txt "1: loop takes FACE U V: a CORNER picks")
+subdiv_evaluate_error(nan ${cube} catmull-clark nan.txt "1: u is 'nan', not a finite number\n$")
+subdiv_evaluate_error(inf ${cube} catmull-clark inf.txt "3: v is '-inf', not a finite number\n$")
+subdiv_evaluate_error(too_few_fields ${cube} catmull-clark too_few_fields.txt
+  "1: expected FACE U V or FACE CORNER U V, got 2 fields\n$")
+subdiv_evaluate_error(too_many_fields ${cube} catmull-clark too_many_fields.txt
+  "1: expected FACE U V or FACE CORNER U V, got 5 fields\n$")
+subdiv_evaluate_error(not_a_number ${cube} catmull-clark not_a_number.txt "1: v 'abc' is not a number\n$")
+subdiv_evaluate_error(not_finite ${SUBDIV_CLI_DIR}/hostile/near_max_cube.off catmull-clark near_max.txt
+  "2: the limit there is not finite: the coordinates of '[^']*near_max_cube.off' are too large for the scheme's weights; scale the mesh down\n$")
+subdiv_cli_error(evaluate_no_locations 1 "'[^']*no_locations.txt' holds no locations"
+  ARGS evaluate ${cube} --scheme catmull-clark --at ${locations}/no_locations.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_missing_locations 1 "cannot read '[^']*missing.txt'"
+  ARGS evaluate ${cube} --scheme catmull-clark --at missing.txt -o @WORK@/out.txt)
+# an error writes nothing on stdout either
+subdiv_cli_test(evaluate_error_stdout_empty ARGS evaluate ${cube} --scheme catmull-clark
+  --at ${locations}/u_outside.txt RC 1 STDOUT_REGEX "^$" STDERR_LINES 1)
+
+# meshes the evaluator refuses (exit 1) and malformed command lines (exit 2)
+subdiv_cli_error(evaluate_loop_on_quads 1 "Limit_surface: face 0 is not a triangle \\(Loop\\)"
+  ARGS evaluate ${cube} --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_loop_with_border 1 "Limit_surface: the mesh has a border \\(vertex [0-9]+\\): not supported yet for Loop"
+  ARGS evaluate ${SUBDIV_CLI_DIR}/open_square.off --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_scheme_not_evaluated 2 "--scheme sqrt3: only catmull-clark and loop are evaluated so far\n$"
+  ARGS evaluate ${tetra} --scheme sqrt3 --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_unknown_scheme 2 "unknown scheme 'cubic'"
+  ARGS evaluate ${tetra} --scheme cubic --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_missing_at 2 "missing --at LOCATIONS\n$" ARGS evaluate ${cube} --scheme catmull-clark)
+subdiv_cli_error(evaluate_missing_scheme 2 "missing --scheme \\(catmull-clark or loop\\)\n$"
+  ARGS evaluate ${cube} --at ${locations}/one_centre.txt)
+subdiv_cli_error(evaluate_missing_mesh 2 "missing MESH" ARGS evaluate --scheme loop --at ${locations}/one_centre.txt)
+subdiv_cli_error(evaluate_mesh_extension 2 "MESH '[^']*one_centre.txt': unknown format '.txt'"
+  ARGS evaluate ${locations}/one_centre.txt --scheme loop --at ${locations}/one_centre.txt)
+
+endif()
