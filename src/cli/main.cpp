@@ -32,6 +32,8 @@ Commands:
   evaluate    the limit surface of a mesh (catmull-clark, loop) at parameters
               read from a file: position, first and second derivatives,
               normal; lines or one JSON object (--json)
+  tessellate  a mesh of points of the limit surface (catmull-clark, loop), N
+              segments per edge, without cracks; quads or triangles, normals
   analyse     eigen-analysis of a scheme from its masks: eigenvalues, C1
               verdict, limit mask (surfaces at a vertex of valence N, interior
               or border; curves); a table or one JSON object (--json)
@@ -75,10 +77,13 @@ int dispatch(const std::vector<std::string>& args, const std::string& program)
     return cgal_subdiv::demo_command(rest, program);
   if(command == "evaluate")
     return cgal_subdiv::evaluate_command(rest);
+  if(command == "tessellate")
+    return cgal_subdiv::tessellate_command(rest);
   if(command == "analyse" || command == "analyze")
     return cgal_subdiv::analyse_command(rest);
-  throw cgal_subdiv::Usage_error("unknown command '" + command +
-                                 "' (expected curve, surface, evaluate, analyse or demo; see 'cgal-subdiv --help')");
+  throw cgal_subdiv::Usage_error(
+    "unknown command '" + command +
+    "' (expected curve, surface, evaluate, tessellate, analyse or demo; see 'cgal-subdiv --help')");
 }
 
 } // namespace

@@ -1,4 +1,4 @@
-# Checks of `cgal-subdiv evaluate`: values derived
+# Checks of `cgal-subdiv evaluate` and `cgal-subdiv tessellate`: values derived
 # by hand (below, case by case) and values of another path through the tool,
 # `cgal-subdiv surface --limit` (project_to_limit, the limit masks of the
 # eigen-analysis). Used by test/cli_tests.cmake as
@@ -203,8 +203,52 @@ def json_layout():
     assert sub["face"] == 2 and sub["corner"] == 1, sub
 
 
+def tessellate_matches_evaluate():
+    # the output points are the evaluator's: bit for bit inside a face (rate
+    # 2: the centre (1/2, 1/2); rate 3: (1/3, 2/3)); a point on a mesh edge or
+    # vertex is evaluated once, from the first face that reaches it, and the
+    # other face's evaluation there may differ in the last bits
+    for rate, inner, shared in ((2, [(0.5, 0.5)], [(0.5, 0), (0, 0)]), (3, [("1/3", "2/3")], [("2/3", 0)])):
+        out = os.path.join(WORK, "tess.off")
+        run("tessellate", CUBE, "-o", out, "--scheme", "catmull-clark", "--rate", str(rate))
+        points = read_off(out)[0]
+        for f in range(6):
+            for row in evaluate(CUBE, "catmull-clark", [(f, u, v) for u, v in inner]):
+                assert tuple(position(row)) in points, (rate, f, row)
+            for row in evaluate(CUBE, "catmull-clark", [(f, u, v) for u, v in shared]):
+                expect(nearest(points, position(row)), position(row), what=(rate, f))
+    # Loop on the tetrahedron at rate 3: the face points (1/3, 1/3), and the edge points
+    out = os.path.join(WORK, "tess.off")
+    run("tessellate", TETRA, "-o", out, "--scheme", "loop", "--rate", "3")
+    points = read_off(out)[0]
+    for f in range(4):
+        for row in evaluate(TETRA, "loop", [(f, "1/3", "1/3")]):
+            assert tuple(position(row)) in points, row
+        for row in evaluate(TETRA, "loop", [(f, "1/3", 0), (f, "2/3", "1/3")]):
+            expect(nearest(points, position(row)), position(row), what=f)
+
+
+def tessellate_normals():
+    # --normals to OBJ: one vn per v, the evaluator's normal at its point
+    out = os.path.join(WORK, "tess.obj")
+    run("tessellate", CUBE, "-o", out, "--scheme", "catmull-clark", "--rate", "2", "--normals")
+    with open(out) as f:
+        words = [l.split() for l in f]
+    v = [tuple(float(x) for x in w[1:4]) for w in words if w and w[0] == "v"]
+    vn = [[float(x) for x in w[1:4]] for w in words if w and w[0] == "vn"]
+    assert len(v) == 26 and len(vn) == 26, (len(v), len(vn))
+    for row in evaluate(CUBE, "catmull-clark", [(f, u, v) for f in range(6) for u, v in ((0, 0), (0.5, 0), (0.5, 0.5))]):
+        point = nearest(v, position(row))
+        expect(point, position(row), what=row)
+        expect(vn[v.index(point)], normal(row), what=row)
+    # every face f v//vn with the vertex's own normal
+    for w in words:
+        if w and w[0] == "f":
+            assert all(c.split("//")[0] == c.split("//")[1] for c in w[1:]), w
+
+
 CASES = {f.__name__: f for f in [cc_cube_corners, cc_cube_centres, cc_grid_plane, loop_tetra, cc_sub_quads,
-                                 json_layout]}
+                                 json_layout, tessellate_matches_evaluate, tessellate_normals]}
 
 if __name__ == "__main__":
     os.makedirs(WORK, exist_ok=True)
