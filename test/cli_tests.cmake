@@ -886,3 +886,144 @@ subdiv_cli_test(demo_analysis_summary ARGS demo --output-dir @WORK@/demo TIMEOUT
   FILE @WORK@/demo/index.md
   FILE_REGEX "## Analysis.*\\| catmull-clark \\| 3\\.\\.8 \\| 0\\.4101, 0\\.5000, [^\n]* \\| C1 at 3\\.\\.8 \\|")
 endif()
+
+# === cgal-subdiv evaluate and tessellate (CGAL/Subdiv/limit/) ===================
+if(TARGET cgal-subdiv)
+set(locations ${SUBDIV_CLI_DIR}/locations)
+set(grid ${SUBDIV_CLI_DIR}/grid_4x4.off)
+
+subdiv_cli_test(evaluate_help ARGS evaluate --help
+  STDOUT_REGEX "--scheme.*--at LOCATIONS.*FACE U V.*FACE CORNER U V.*--json.*x y z dux duy duz dvx dvy dvz nx ny nz.*Exit status")
+subdiv_cli_test(tessellate_help ARGS tessellate --help
+  STDOUT_REGEX "--scheme.*--rate N.*V \\+ E \\(N - 1\\) \\+ F \\(N - 1\\)\\^2.*--triangles.*--normals.*Exit status")
+subdiv_cli_test(help_lists_limit_commands ARGS --help STDOUT_REGEX "\n  evaluate +[^\n]*\n.*\n  tessellate +")
+
+# a flat grid of quads: face 5 (a regular patch) is the plane (1 + u, 1 + v, 0),
+# du = (1, 0, 0), dv = (0, 1, 0) (to rounding: the B-spline's weights in
+# double), z and the normal (0, 0, 1) exactly; to stdout or to -o
+set(near "-?[0-9.e-]+")
+set(grid_face_5 "1.2(5|49999999999999[0-9]*) 1.5 0 ${near} ${near} 0 ${near} ${near} 0 0 0 1")
+subdiv_cli_test(evaluate_grid_stdout ARGS evaluate ${grid} --scheme catmull-clark --at ${locations}/grid_face_5.txt
+  STDOUT_REGEX "^${grid_face_5}\n$")
+subdiv_cli_test(evaluate_grid_output ARGS evaluate ${grid} --scheme catmull-clark --at ${locations}/grid_face_5.txt
+  -o @WORK@/out.txt STDOUT_REGEX "^$" OUTPUT @WORK@/out.txt POINTS 1 FILE @WORK@/out.txt FILE_REGEX "^${grid_face_5}\n$")
+
+# values against hand-derived ones and `surface --limit` (test/cli/limit_checks.py)
+function(subdiv_limit_check name)
+  if(NOT Python3_Interpreter_FOUND)
+    return()
+  endif()
+  add_test(NAME cli_limit_${name}
+           COMMAND ${Python3_EXECUTABLE} ${SUBDIV_CLI_DIR}/limit_checks.py $<TARGET_FILE:cgal-subdiv> ${SUBDIV_CLI_DIR}
+                   ${CMAKE_CURRENT_BINARY_DIR}/cli/limit_${name} ${name})
+  subdiv_timeout(timeout 60)
+  set_tests_properties(cli_limit_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
+endfunction()
+foreach(check IN ITEMS cc_cube_corners cc_cube_centres cc_grid_plane loop_tetra cc_sub_quads json_layout
+                       tessellate_matches_evaluate tessellate_normals)
+  subdiv_limit_check(${check})
+endforeach()
+
+# bad locations: one line naming LOCATIONS and the line, exit 1, no output
+function(subdiv_evaluate_error name mesh scheme file regex)
+  subdiv_cli_error(evaluate_${name} 1 "${file}:${regex}"
+    ARGS evaluate ${mesh} --scheme ${scheme} --at ${locations}/${file} -o @WORK@/out.txt)
+endfunction()
+subdiv_evaluate_error(face_out_of_range ${cube} catmull-clark face_out_of_range.txt
+  "3: face 12 out of range \\(the mesh has 6 faces\\)\n$")
+subdiv_evaluate_error(face_negative ${cube} catmull-clark face_negative.txt
+  "2: face -1 out of range \\(the mesh has 6 faces\\)\n$")
+subdiv_evaluate_error(face_not_whole ${cube} catmull-clark face_not_whole.txt "2: FACE '1.5' is not a whole number\n$")
+subdiv_evaluate_error(u_outside ${cube} catmull-clark u_outside.txt
+  "3: u = 1.5 is outside the domain of face 2 \\(\\[0, 1\\]\\^2\\)\n$")
+subdiv_evaluate_error(v_negative ${tetra} loop v_negative.txt
+  "1: v = -1/8 is outside the domain of face 0 \\(u, v >= 0, u \\+ v <= 1\\)\n$")
+subdiv_evaluate_error(outside_triangle ${tetra} loop outside_triangle.txt
+  "2: u \\+ v = 1.25 is outside the domain of face 0 \\(u, v >= 0, u \\+ v <= 1\\)\n$")
+subdiv_evaluate_error(corner_for_quad ${cube} catmull-clark corner_for_quad.txt
+  "1: face 0 is a quad: give FACE U V, without a CORNER\n$")
+subdiv_evaluate_error(corner_missing ${tetra} catmull-clark corner_missing.txt
+  "2: face 1 has 3 corners: give FACE CORNER U V, its sub-quad at CORNER\n$")
+subdiv_evaluate_error(corner_out_of_range ${tetra} catmull-clark corner_out_of_range.txt
+  "1: face 0 has no corner 3 \\(its corners are 0 to 2\\)\n$")
+subdiv_evaluate_error(corner_for_loop ${tetra} loop corner_for_loop.txt "1: loop takes FACE U V: a CORNER picks")
+subdiv_evaluate_error(nan ${cube} catmull-clark nan.txt "1: u is 'nan', not a finite number\n$")
+subdiv_evaluate_error(inf ${cube} catmull-clark inf.txt "3: v is '-inf', not a finite number\n$")
+subdiv_evaluate_error(too_few_fields ${cube} catmull-clark too_few_fields.txt
+  "1: expected FACE U V or FACE CORNER U V, got 2 fields\n$")
+subdiv_evaluate_error(too_many_fields ${cube} catmull-clark too_many_fields.txt
+  "1: expected FACE U V or FACE CORNER U V, got 5 fields\n$")
+subdiv_evaluate_error(not_a_number ${cube} catmull-clark not_a_number.txt "1: v 'abc' is not a number\n$")
+subdiv_evaluate_error(not_finite ${SUBDIV_CLI_DIR}/hostile/near_max_cube.off catmull-clark near_max.txt
+  "2: the limit there is not finite: the coordinates of '[^']*near_max_cube.off' are too large for the scheme's weights; scale the mesh down\n$")
+subdiv_cli_error(evaluate_no_locations 1 "'[^']*no_locations.txt' holds no locations"
+  ARGS evaluate ${cube} --scheme catmull-clark --at ${locations}/no_locations.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_missing_locations 1 "cannot read '[^']*missing.txt'"
+  ARGS evaluate ${cube} --scheme catmull-clark --at missing.txt -o @WORK@/out.txt)
+# an error writes nothing on stdout either
+subdiv_cli_test(evaluate_error_stdout_empty ARGS evaluate ${cube} --scheme catmull-clark
+  --at ${locations}/u_outside.txt RC 1 STDOUT_REGEX "^$" STDERR_LINES 1)
+
+# meshes the evaluator refuses (exit 1) and malformed command lines (exit 2)
+subdiv_cli_error(evaluate_loop_on_quads 1 "Limit_surface: face 0 is not a triangle \\(Loop\\)"
+  ARGS evaluate ${cube} --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_loop_with_border 1 "Limit_surface: the mesh has a border \\(vertex [0-9]+\\): not supported yet for Loop"
+  ARGS evaluate ${SUBDIV_CLI_DIR}/open_square.off --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_scheme_not_evaluated 2 "--scheme sqrt3: only catmull-clark and loop are evaluated so far\n$"
+  ARGS evaluate ${tetra} --scheme sqrt3 --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_unknown_scheme 2 "unknown scheme 'cubic'"
+  ARGS evaluate ${tetra} --scheme cubic --at ${locations}/one_centre.txt -o @WORK@/out.txt)
+subdiv_cli_error(evaluate_missing_at 2 "missing --at LOCATIONS\n$" ARGS evaluate ${cube} --scheme catmull-clark)
+subdiv_cli_error(evaluate_missing_scheme 2 "missing --scheme \\(catmull-clark or loop\\)\n$"
+  ARGS evaluate ${cube} --at ${locations}/one_centre.txt)
+subdiv_cli_error(evaluate_missing_mesh 2 "missing MESH" ARGS evaluate --scheme loop --at ${locations}/one_centre.txt)
+subdiv_cli_error(evaluate_mesh_extension 2 "MESH '[^']*one_centre.txt': unknown format '.txt'"
+  ARGS evaluate ${locations}/one_centre.txt --scheme loop --at ${locations}/one_centre.txt)
+
+# tessellate: on a mesh of quads V + E (N - 1) + F (N - 1)^2 vertices (every
+# mesh vertex and every inner edge point once, shared by the faces around it)
+# and F N^2 quads or 2 F N^2 triangles; the cube: V 8, E 12, F 6
+subdiv_cli_test(tessellate_cube_rate_2 ARGS tessellate ${cube} ${mesh_out} --scheme catmull-clark --rate 2
+  OUTPUT @WORK@/out.off VERTICES 26 FACES 24
+  STDOUT_REGEX "^catmull-clark, rate 2: 8 V, 12 E, 6 F -> 26 V, 48 E, 24 F in [0-9.]+ s; wrote [^\n]*out.off\n$")
+subdiv_cli_test(tessellate_cube_rate_3 ARGS tessellate ${cube} ${mesh_out} --scheme catmull-clark --rate 3
+  OUTPUT @WORK@/out.off VERTICES 56 FACES 54 FILE @WORK@/out.off FILE_REGEX "\n4 +[0-9]+ [0-9]+ [0-9]+ [0-9]+\n")
+subdiv_cli_test(tessellate_cube_rate_3_triangles ARGS tessellate ${cube} ${mesh_out} --scheme catmull-clark --rate 3
+  --triangles OUTPUT @WORK@/out.off VERTICES 56 FACES 108 FILE @WORK@/out.off FILE_NOT_REGEX "\n4 +[0-9]+ ")
+# Loop: a triangle becomes N^2 triangles; V + E (N - 1) + F (N - 1)(N - 2)/2 vertices
+subdiv_cli_test(tessellate_tetra_loop_rate_3 ARGS tessellate ${tetra} -o @WORK@/out.obj --scheme loop --rate 3
+  OUTPUT @WORK@/out.obj VERTICES 20 FACES 36)
+# catmull-clark on triangles: 3 sub-quads of (N/2)^2 quads each; N = 4: V + E (N - 1)
+# + F (1 + 3 (N/2 - 1) + 3 (N/2 - 1)^2) vertices (the centre, the spokes to it, the
+# sub-quads' inner points) = 4 + 18 + 28, and 12 F faces
+subdiv_cli_test(tessellate_tetra_cc_rate_4 ARGS tessellate ${tetra} -o @WORK@/out.ply --scheme catmull-clark --rate 4
+  OUTPUT @WORK@/out.ply VERTICES 50 FACES 48)
+# normals: one vn per vertex (OBJ), nx ny nz (PLY), NOFF (OFF)
+subdiv_cli_test(tessellate_normals_obj ARGS tessellate ${cube} -o @WORK@/out.obj --scheme catmull-clark --rate 2
+  --normals OUTPUT @WORK@/out.obj VERTICES 26 FACES 24 NORMALS 26)
+subdiv_cli_test(tessellate_normals_ply ARGS tessellate ${cube} -o @WORK@/out.ply --scheme catmull-clark --rate 2
+  --normals OUTPUT @WORK@/out.ply VERTICES 26 FACES 24 FILE @WORK@/out.ply FILE_REGEX "property double nx\n")
+subdiv_cli_test(tessellate_normals_off ARGS tessellate ${cube} -o @WORK@/out.off --scheme catmull-clark --rate 2
+  --normals OUTPUT @WORK@/out.off VERTICES 26 FACES 24 FILE @WORK@/out.off FILE_REGEX "^NOFF\n")
+subdiv_cli_test(tessellate_no_normals ARGS tessellate ${cube} -o @WORK@/out.obj --scheme catmull-clark --rate 2
+  OUTPUT @WORK@/out.obj VERTICES 26 FACES 24 NORMALS 0)
+
+foreach(rate IN ITEMS 0 -1 1025 2.5 two)
+  string(REPLACE "." "_" name "${rate}")
+  subdiv_surface_error(tessellate_bad_rate_${name} 2 "--rate is a whole number from 1 to 1024, not '${rate}'\n$"
+    ARGS tessellate ${cube} ${mesh_out} --scheme catmull-clark --rate ${rate})
+endforeach()
+subdiv_surface_error(tessellate_missing_rate 2 "missing --rate N\n$" ARGS tessellate ${cube} ${mesh_out} --scheme loop)
+subdiv_surface_error(tessellate_missing_output 2 "missing -o OUTPUT\n$"
+  ARGS tessellate ${cube} --scheme catmull-clark --rate 2)
+subdiv_surface_error(tessellate_scheme_not_evaluated 2 "--scheme doo-sabin: only catmull-clark and loop are evaluated so far\n$"
+  ARGS tessellate ${cube} ${mesh_out} --scheme doo-sabin --rate 2)
+subdiv_cli_test(tessellate_normals_stl RC 2 STDERR_LINES 1
+  STDERR_REGEX "^cgal-subdiv: error: --normals: OUTPUT '[^']*out.stl' is STL, which holds face normals only"
+  ARGS tessellate ${cube} -o @WORK@/out.stl --scheme catmull-clark --rate 2 --normals OUTPUT @WORK@/out.stl)
+subdiv_surface_error(tessellate_loop_on_quads 1 "Limit_surface: face 0 is not a triangle \\(Loop\\)"
+  ARGS tessellate ${cube} ${mesh_out} --scheme loop --rate 2)
+# 64 triangles at rate 1024: 64 x 1025 x 1026 / 2 points, above the library's 2^24
+subdiv_surface_error(tessellate_too_large 1 "tessellate: the rates would make up to [0-9.]+ output points, more than"
+  ARGS tessellate ${PROJECT_SOURCE_DIR}/doc/data/torus.off ${mesh_out} --scheme loop --rate 1024)
+endif()

@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Copyright (c) 2026 CGAL Subdiv contributors
 //
-// The curve schemes' eigen-analysis in Exact_rational, and the JSON helpers.
+// The curve schemes' eigen-analysis in Exact_rational.
 #include "analyse_schemes.h"
 #include "schemes.h"
 
 #include <CGAL/Subdiv/analysis/curve_analysis.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <type_traits>
 
 namespace cgal_subdiv {
@@ -78,35 +76,6 @@ std::string smoothness_text(const Curve_summary& summary)
   if(summary.smoothness < 0)
     return "not proven";
   return "C^" + std::to_string(summary.smoothness);
-}
-
-std::string json_number(double x)
-{
-  if(!std::isfinite(x))
-    return "null";
-  if(x == 0)
-    return "0";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-
-std::string json_string(const std::string& text)
-{
-  std::string out = "\"";
-  for(const char c : text) {
-    if(c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if(static_cast<unsigned char>(c) < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += buffer;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 } // namespace cgal_subdiv

@@ -10,6 +10,7 @@
 #define CGAL_SUBDIV_CLI_ANALYSE_SCHEMES_H
 
 #include "common.h"
+#include "numbers.h" // json_number, json_string
 
 #include <CGAL/Subdiv/analysis/Configuration.h>
 
@@ -135,11 +136,6 @@ Curve_summary analyse_curve(const Scheme_spec& spec);
 
 /// "C^2", "C^inf", "C^0", "not proven"
 std::string smoothness_text(const Curve_summary& summary);
-
-/// JSON number: 17 significant digits, null for NaN and infinities
-std::string json_number(double x);
-/// JSON string with the escapes JSON needs
-std::string json_string(const std::string& text);
 
 } // namespace cgal_subdiv
 

@@ -15,6 +15,8 @@ int curve_command(const std::vector<std::string>& args);
 int surface_command(const std::vector<std::string>& args);
 int demo_command(const std::vector<std::string>& args, const std::string& program_path);
 int analyse_command(const std::vector<std::string>& args);
+int evaluate_command(const std::vector<std::string>& args);
+int tessellate_command(const std::vector<std::string>& args);
 
 } // namespace cgal_subdiv
 

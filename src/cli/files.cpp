@@ -13,21 +13,6 @@
 #include <stdexcept>
 
 namespace cgal_subdiv {
-namespace {
-
-struct Token
-{
-  std::string text;
-  int line;
-};
-
-// A line with its comment removed, split at blanks and commas.
-struct Data_line
-{
-  int number;
-  std::string text;
-  std::vector<std::string> tokens;
-};
 
 std::vector<Data_line> read_data_lines(const std::string& path)
 {
@@ -57,10 +42,16 @@ std::vector<Data_line> read_data_lines(const std::string& path)
   }
   if(in.bad())
     throw Input_error("cannot read '" + path + "': read error");
-  if(lines.empty())
-    throw Input_error("'" + path + "' contains no points");
   return lines;
 }
+
+namespace {
+
+struct Token
+{
+  std::string text;
+  int line;
+};
 
 bool is_count(const std::string& s)
 {
@@ -172,6 +163,8 @@ Input_polyline read_polygon(const std::string& path, const std::vector<Data_line
 Input_polyline read_polyline(const std::string& path)
 {
   const std::vector<Data_line> lines = read_data_lines(path);
+  if(lines.empty())
+    throw Input_error("'" + path + "' contains no points");
   const Data_line& first = lines.front();
   if(first.tokens.size() == 1 && is_count(first.tokens.front()))
     return read_polygon(path, lines);

@@ -10,8 +10,22 @@
 #include <cstddef>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace cgal_subdiv {
+
+/// A line of a text file with its comment (from `#`) removed, split at
+/// blanks, tabs and commas.
+struct Data_line
+{
+  int number;                      // from 1
+  std::string text;                // without the comment and the outer blanks
+  std::vector<std::string> tokens; // never empty
+};
+
+/// the lines of `path` that hold more than blanks and a comment;
+/// \throws Input_error if it cannot be read (missing, a directory)
+std::vector<Data_line> read_data_lines(const std::string& path);
 
 /*
  * reads the points of `path`, in one of two formats (found from the first line

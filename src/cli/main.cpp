@@ -23,18 +23,23 @@ const char* const main_help = R"(usage: cgal-subdiv COMMAND [OPTIONS]
 Subdivision curves and surfaces with CGAL Subdiv.
 
 Commands:
-  curve    refine a polyline from a file with a curve scheme (bezier, bspline,
-           chaikin, corner-cutting, four-point); optional SVG figure and
-           convergence report
-  surface  refine a polygon mesh (OFF, OBJ, PLY, STL) with a surface scheme
-           (loop, loop-warren, catmull-clark, doo-sabin, sqrt3, butterfly,
-           modified-butterfly, interpolating-sqrt3, linear)
-  analyse  eigen-analysis of a scheme from its masks: eigenvalues, C1
-           verdict, limit mask (surfaces at a vertex of valence N, interior
-           or border; curves); a table or one JSON object (--json)
-  demo     run every curve scheme on the bundled polygon and every surface
-           scheme on the bundled meshes; write points, meshes, figures,
-           convergence tables and an index to a directory (out/)
+  curve       refine a polyline from a file with a curve scheme (bezier,
+              bspline, chaikin, corner-cutting, four-point); optional SVG
+              figure and convergence report
+  surface     refine a polygon mesh (OFF, OBJ, PLY, STL) with a surface scheme
+              (loop, loop-warren, catmull-clark, doo-sabin, sqrt3, butterfly,
+              modified-butterfly, interpolating-sqrt3, linear)
+  evaluate    the limit surface of a mesh (catmull-clark, loop) at parameters
+              read from a file: position, first and second derivatives,
+              normal; lines or one JSON object (--json)
+  tessellate  a mesh of points of the limit surface (catmull-clark, loop), N
+              segments per edge, without cracks; quads or triangles, normals
+  analyse     eigen-analysis of a scheme from its masks: eigenvalues, C1
+              verdict, limit mask (surfaces at a vertex of valence N, interior
+              or border; curves); a table or one JSON object (--json)
+  demo        run every curve scheme on the bundled polygon and every surface
+              scheme on the bundled meshes; write points, meshes, figures,
+              convergence tables and an index to a directory (out/)
 
 Run 'cgal-subdiv COMMAND --help' for the options of a command.
 
@@ -70,10 +75,15 @@ int dispatch(const std::vector<std::string>& args, const std::string& program)
     return cgal_subdiv::surface_command(rest);
   if(command == "demo")
     return cgal_subdiv::demo_command(rest, program);
+  if(command == "evaluate")
+    return cgal_subdiv::evaluate_command(rest);
+  if(command == "tessellate")
+    return cgal_subdiv::tessellate_command(rest);
   if(command == "analyse" || command == "analyze")
     return cgal_subdiv::analyse_command(rest);
-  throw cgal_subdiv::Usage_error("unknown command '" + command +
-                                 "' (expected curve, surface, analyse or demo; see 'cgal-subdiv --help')");
+  throw cgal_subdiv::Usage_error(
+    "unknown command '" + command +
+    "' (expected curve, surface, evaluate, tessellate, analyse or demo; see 'cgal-subdiv --help')");
 }
 
 } // namespace

@@ -169,4 +169,27 @@ std::string format_double(double x)
   return buffer;
 }
 
+std::string json_number(double x)
+{
+  return std::isfinite(x) ? format_double(x) : "null";
+}
+
+std::string json_string(const std::string& text)
+{
+  std::string out = "\"";
+  for(const char c : text) {
+    if(c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if(static_cast<unsigned char>(c) < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += buffer;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 } // namespace cgal_subdiv

@@ -41,6 +41,11 @@ std::string format_exact(const Exact& x);
 /// 17 significant digits, enough to read the same double back
 std::string format_double(double x);
 
+/// JSON number: as `format_double`, null for NaN and infinities
+std::string json_number(double x);
+/// JSON string with the escapes JSON needs
+std::string json_string(const std::string& text);
+
 /// the number in the form the output uses
 inline std::string format_number(const Exact& x)
 {

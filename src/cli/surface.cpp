@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -95,6 +96,13 @@ Mesh_counts counts(const Surface& mesh)
 std::string describe(const Mesh_counts& c)
 {
   return std::to_string(c.vertices) + " V, " + std::to_string(c.edges) + " E, " + std::to_string(c.faces) + " F";
+}
+
+std::string seconds_text(double seconds)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f s", seconds);
+  return buffer;
 }
 
 Surface read_surface(const std::string& path, Soup_fix fix, std::vector<std::string>& notes,

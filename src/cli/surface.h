@@ -84,6 +84,8 @@ struct Mesh_counts
 Mesh_counts counts(const Surface& mesh);
 /// "8 V, 18 E, 12 F"
 std::string describe(const Mesh_counts& counts);
+/// "0.125 s"
+std::string seconds_text(double seconds);
 
 /*
  * reads `path` (format from the extension) with the checked reader of

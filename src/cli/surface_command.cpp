@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <sstream>
 
@@ -315,13 +314,6 @@ std::string surface_help()
     }
   }
   return help + surface_help_tail;
-}
-
-std::string seconds_text(double s)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f s", s);
-  return buffer;
 }
 
 } // namespace

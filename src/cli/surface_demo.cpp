@@ -11,7 +11,7 @@ namespace {
 
 constexpr int surface_demo_levels = 3;
 
-std::string seconds_text(double s)
+std::string seconds_cell(double s)
 {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.4f", s);
@@ -92,7 +92,7 @@ void write_surface_index(const std::vector<Surface_demo_row>& rows, const std::v
       out << "failed: " << r.failure << " | | | |\n";
       continue;
     }
-    out << vf(r.result.in) << " | " << vf(r.result.out) << " | " << seconds_text(r.result.seconds) << " | [" << r.name
+    out << vf(r.result.in) << " | " << vf(r.result.out) << " | " << seconds_cell(r.result.seconds) << " | [" << r.name
         << ".off](" << r.name << ".off) |\n";
   }
   out << "\n";
@@ -108,7 +108,7 @@ void print_surface_summary(const std::vector<Surface_demo_row>& rows)
       continue;
     }
     std::printf("%-36s %-20s %-7s %6d %13s %15s %9s\n", r.name.c_str(), r.scheme.c_str(), r.mesh.c_str(), r.levels,
-                vf(r.result.in).c_str(), vf(r.result.out).c_str(), seconds_text(r.result.seconds).c_str());
+                vf(r.result.in).c_str(), vf(r.result.out).c_str(), seconds_cell(r.result.seconds).c_str());
   }
   const std::string missing = unavailable_surface_schemes();
   if(!missing.empty())
