@@ -58,10 +58,9 @@ regular patches, local refinement around extraordinary vertices).
 
 Output: one line per location, in the order of LOCATIONS:
   x y z dux duy duz dvx dvy dvz nx ny nz
-17 significant digits. Where the evaluation ends at a vertex of the local
-refinement that no regular patch covers (an extraordinary vertex, or a dyadic
-parameter such as (1/2, 1/2) of a face next to one) the derivatives are zero
-and the normal is the limit normal of that vertex.
+17 significant digits. At an extraordinary vertex itself the derivatives are
+zero (the parameterisation has none there) and the normal is the limit normal
+of that vertex.
 
 Exit status: 0 on success; 1 if the input cannot be used (MESH or LOCATIONS
 unreadable, a mesh the scheme does not evaluate, e.g. loop on quads or with a
