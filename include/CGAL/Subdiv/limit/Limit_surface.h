@@ -30,6 +30,8 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -137,7 +139,8 @@ public:
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
   /// border (not supported yet) or a face that is not a triangle
   explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
-    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>())
+    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>()),
+      m_corners(std::make_shared<Corner_evaluator>(m_mask))
   {
     if constexpr(!quads) {
       for(const halfedge_descriptor h : halfedges(mesh))
@@ -208,6 +211,19 @@ private:
   {
     Patch_mesh mesh;
     Patch_halfedge face_h0;
+  };
+  using Patch_mask = decltype(std::declval<const Mask&>().template rebind<Patch_mesh, FT>());
+  /*
+   * The limit masks at an extraordinary corner come from the analysis of its
+   * configuration (up to half a second each): one Limit_evaluator keeps them
+   * for every evaluation (and every copy of this evaluator), behind a mutex
+   * so that evaluate() stays safe to call from several threads.
+   */
+  struct Corner_evaluator
+  {
+    explicit Corner_evaluator(const Patch_mask& mask) : evaluator(mask) {}
+    std::mutex mutex;
+    Limit_evaluator<Patch_mask> evaluator;
   };
 
   template <class Element>
@@ -453,9 +469,10 @@ private:
                            .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
                              "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
                            .first;
-    limit_normals(patch.mesh, m_mask, normals);
+    const std::lock_guard<std::mutex> lock(m_corners->mutex);
+    m_corners->evaluator.limit_normals(patch.mesh, normals);
     s.normal = normals[corner];
-    project_to_limit(patch.mesh, m_mask);
+    m_corners->evaluator.project_to_limit(patch.mesh);
     s.position = patch.mesh.point(corner);
     return s;
   }
@@ -560,7 +577,8 @@ private:
   }
 
   const PolygonMesh* m_mesh;
-  decltype(std::declval<const Mask&>().template rebind<Patch_mesh, FT>()) m_mask;
+  Patch_mask m_mask;
+  std::shared_ptr<Corner_evaluator> m_corners;
 };
 
 } // namespace Subdiv
