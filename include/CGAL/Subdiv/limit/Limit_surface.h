@@ -79,10 +79,11 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
 
 /*!
  * \ingroup PkgSubdivAnalysis
- * Evaluates the limit surface of a closed mesh under Catmull-Clark
- * (`Catmull_clark_mask`, the default) or Loop (`Loop_mask`, either beta) at
- * any parameter of any face (the first slice of issue 13: no border and no
- * sharpness tag yet; both are refused).
+ * Evaluates the limit surface of a mesh under Catmull-Clark
+ * (`Catmull_clark_mask`, the default, with borders and either
+ * `Border_corners`) or Loop (`Loop_mask`, either beta; closed meshes only,
+ * a border is refused) at any parameter of any face (the first slice of
+ * issue 13: the mesh's sharpness tags are not read yet).
  *
  * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
  * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
@@ -97,7 +98,10 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * them) is a regular patch, evaluated exactly as the bicubic B-spline of its
  * 16 control points (`bspline_patch_weights()`); so is a triangle whose
  * three corners have valence 6 (and only triangles around them), as the
- * quartic box spline of its 12 (`box_spline_patch_weights()`). Any other
+ * quartic box spline of its 12 (`box_spline_patch_weights()`). Under
+ * Catmull-Clark a quad with one side on the border, or with
+ * `Border_corners::sharp` two sides meeting at a corner of one face, is
+ * regular too, the control points beyond the border extrapolated. Any other
  * face is refined locally (its 1-ring, with the library's own `subdivide()`,
  * in the mesh's number type) and the child that holds (u, v) is evaluated in
  * turn: every child away from an extraordinary vertex is regular after one
@@ -296,33 +300,55 @@ private:
   static constexpr std::size_t regular_valence = quads ? 4 : 6;
   static constexpr std::size_t face_corners = quads ? 4 : 3;
 
-  // the side of the patch's quad on the border (the edge from corner i to
-  // corner i+1), or -1 if none
-  static int border_side(const Patch& patch)
+  // the sides of the patch's quad on the border: bit i for the edge from
+  // corner i to corner i+1
+  static int border_sides(const Patch& patch)
   {
+    int sides = 0;
     Patch_halfedge h = patch.mesh.next(patch.h0);
     for(int i = 0; i < 4; ++i, h = patch.mesh.next(h))
       if(patch.mesh.is_border(patch.mesh.opposite(h)))
-        return i;
-    return -1;
+        sides |= 1 << i;
+    return sides;
+  }
+
+  // whether corner i of the patch's face is a border corner of one face that
+  // the mask keeps sharp (Border_corners::sharp)
+  bool is_sharp_corner(const Patch& patch, int i) const
+  {
+    if constexpr(quads) {
+      Patch_halfedge h = patch.h0;
+      for(int k = 0; k < i; ++k)
+        h = patch.mesh.next(h);
+      return m_mask.border_corners() == Border_corners::sharp && patch.mesh.is_border(patch.mesh.target(h)) &&
+             patch.mesh.degree(patch.mesh.target(h)) == 2;
+    } else
+      return false;
   }
 
   // whether the face of h0 and the faces around its corners are all quads
   // (triangles) and its corners inner vertices of valence 4 (6); under
   // Catmull-Clark, also a quad with one side on the border, whose two ends
-  // have two faces, the other corners being inner of valence 4
-  static bool is_regular(const Patch& patch)
+  // have two faces, the other corners being inner of valence 4, and with
+  // sharp border corners a quad with two adjacent sides on the border, whose
+  // common corner is a corner of one face (kept by the mask: the B-spline
+  // interpolates it), their other ends having two faces and the fourth
+  // corner being inner of valence 4
+  bool is_regular(const Patch& patch) const
   {
     const Patch_mesh& mesh = patch.mesh;
-    const int side = quads ? border_side(patch) : -1;
+    const int sides = quads ? border_sides(patch) : 0;
+    if((sides & 5) == 5 || (sides & 10) == 10 ||
+       (sides != 0 && (sides & (sides - 1)) != 0 && m_mask.border_corners() != Border_corners::sharp))
+      return false; // opposite sides on the border, or a corner that is not kept
     int i = 0;
     for(const Patch_halfedge h : CGAL::halfedges_around_face(patch.h0, mesh)) {
       const auto corner = mesh.target(h);
       // corner i ends side i - 1 (from corner i - 1) and starts side i
-      const bool on_border_side = side >= 0 && (side == i || (side + 1) % 4 == i);
+      const int on_border = ((sides >> i) & 1) + ((sides >> ((i + 3) % 4)) & 1);
       ++i;
-      if(on_border_side ? mesh.degree(corner) != 3 || !mesh.is_border(corner)
-                        : mesh.degree(corner) != regular_valence || mesh.is_border(corner))
+      if(on_border > 0 ? mesh.degree(corner) != std::size_t(4 - on_border) || !mesh.is_border(corner)
+                       : mesh.degree(corner) != regular_valence || mesh.is_border(corner))
         return false;
       for(const auto g : CGAL::faces_around_target(h, mesh))
         if(g != Patch_mesh::null_face() && mesh.degree(g) != face_corners)
@@ -340,8 +366,11 @@ private:
    * the border has nothing beyond: its row (column) is extrapolated, p =
    * 2 b - q from the border point b and the inner one q behind it, so that
    * the B-spline refines as Catmull-Clark's border rules do (a border
-   * vertex 3/4, 1/8, 1/8; a border edge its midpoint) and its side is the
-   * cubic B-spline of the border points.
+   * vertex 3/4, 1/8, 1/8; a border edge its midpoint; a sharp corner stays)
+   * and its side is the cubic B-spline of the border points. With two sides
+   * on the border, the second extrapolation also makes the point beyond
+   * their common corner (the first one's there, read from points not made
+   * yet, is overwritten).
    */
   static std::array<Point, 16> quad_control_points(const Patch& patch)
   {
@@ -350,25 +379,27 @@ private:
     h[0] = patch.h0;
     for(int i = 1; i < 4; ++i)
       h[i] = m.next(h[i - 1]);
-    const int side = border_side(patch);
+    const int sides = border_sides(patch);
     // by corner i: its point, the neighbours across the edge to corner i+1
     // (next to corner i, then to corner i+1), and its diagonal neighbour
     static const int corner_point[4] = {5, 6, 10, 9};
     static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
     static const int diagonal[4] = {0, 3, 15, 12};
     std::array<Point, 16> points;
+    points.fill(Point(CGAL::ORIGIN));
     for(int i = 0; i < 4; ++i) {
       points[corner_point[i]] = m.point(m.target(h[i]));
-      if(i == side) // nothing beyond
+      if((sides >> i) & 1) // nothing beyond
         continue;
       const Patch_halfedge beyond = m.opposite(h[(i + 1) % 4]); // across the edge from corner i to corner i+1
       points[across[i][0]] = m.point(m.target(m.next(beyond)));
       points[across[i][1]] = m.point(m.target(m.next(m.next(beyond))));
-      if(side < 0 || (side + 1) % 4 != i) // corner i's diagonal face is not beyond the border
+      if(!((sides >> ((i + 3) % 4)) & 1)) // corner i's diagonal face is not beyond the border
         points[diagonal[i]] = m.point(m.source(m.prev(m.opposite(m.next(beyond)))));
     }
-    if(side >= 0)
-      extrapolate_beyond(side, points);
+    for(int side = 0; side < 4; ++side)
+      if((sides >> side) & 1)
+        extrapolate_beyond(side, points);
     return points;
   }
 
@@ -535,7 +566,8 @@ private:
     if(is_regular(patch))
       return evaluate_regular(patch, u, v);
     const int corner = corner_at(u, v);
-    if(corner >= 0 || depth >= max_depth)
+    // a sharp corner is regular one level down (its child quad has two sides on the border)
+    if((corner >= 0 && !is_sharp_corner(patch, corner)) || depth >= max_depth)
       return evaluate_at_corner(std::move(patch), corner >= 0 ? corner : nearest_corner(u, v));
     const Child_parameters c = child_parameters(u, v);
     const Child child = refine_and_find(patch, -1, c.box_min, c.anchor);
