@@ -26,6 +26,8 @@
 #if defined(SUBDIV_TEST_WITH_OSD)
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
+
+#include "opensubdiv_far.h"
 #endif
 
 #include <algorithm>
@@ -342,16 +344,7 @@ std::vector<testing_utils::Double_point> hole_centroids(const Mesh& mesh)
 #if defined(SUBDIV_TEST_WITH_OSD)
 namespace Osd = OpenSubdiv::Far;
 
-struct Osd_vertex
-{
-  double p[3];
-  void Clear() { p[0] = p[1] = p[2] = 0; }
-  void AddWithWeight(const Osd_vertex& v, double w)
-  {
-    for(int i = 0; i < 3; ++i)
-      p[i] += w * v.p[i];
-  }
-};
+using testing_utils::Osd_vertex;
 
 /// one level of OpenSubdiv Far: its points, and the centroids of its holes
 struct Osd_level

@@ -83,10 +83,11 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
 
 /*!
  * \ingroup PkgSubdivAnalysis
- * Evaluates the limit surface of a closed mesh under Catmull-Clark
- * (`Catmull_clark_mask`, the default) or Loop (`Loop_mask`, either beta) at
- * any parameter of any face (the first slice of issue 13: no border and no
- * sharpness tag yet; both are refused).
+ * Evaluates the limit surface of a mesh under Catmull-Clark
+ * (`Catmull_clark_mask`, the default, with borders and either
+ * `Border_corners`) or Loop (`Loop_mask`, either beta; closed meshes only,
+ * a border is refused) at any parameter of any face (the mesh's sharpness
+ * tags are not read yet).
  *
  * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
  * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
@@ -101,7 +102,10 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * them) is a regular patch, evaluated exactly as the bicubic B-spline of its
  * 16 control points (`bspline_patch_weights()`); so is a triangle whose
  * three corners have valence 6 (and only triangles around them), as the
- * quartic box spline of its 12 (`box_spline_patch_weights()`). In a
+ * quartic box spline of its 12 (`box_spline_patch_weights()`). Under
+ * Catmull-Clark a quad with one side on the border, or with
+ * `Border_corners::sharp` two sides meeting at a corner of one face, is
+ * regular too, the control points beyond the border extrapolated. In a
  * floating-point kernel, a patch whose one extraordinary corner is inner
  * (all its faces quads, or triangles) is evaluated by Stam's method
  * (`Stam_eigenbasis.h`): the local subdivision matrix of the patch and of
@@ -348,7 +352,7 @@ private:
                                                 const FT& u, const FT& v, int depth) const
   {
     const internal::Patch_points<Source, quads> patch(mesh, h0);
-    if(patch.is_regular())
+    if(patch.is_regular(sharp_corners()))
       return combine(patch.control_points(), basis_weights(u, v));
     if constexpr(std::is_floating_point_v<FT>) {
       if(!eigenbasis)
@@ -368,20 +372,32 @@ private:
     return u0 && v0 ? 0 : u1 && v0 ? 1 : u1 && v1 ? 2 : u0 && v1 ? 3 : -1;
   }
 
+  // whether the mask keeps the border corners of one face (Border_corners::sharp, Catmull-Clark)
+  bool sharp_corners() const
+  {
+    if constexpr(quads)
+      return m_mask.border_corners() == Border_corners::sharp;
+    else
+      return false;
+  }
+
   /*
    * Whether corner i of the patch's face is an inner vertex of the regular
-   * valence, or under Catmull-Clark a border vertex with two faces: the
-   * children around it become regular patches, which give the derivatives
-   * there too (the limit masks do not).
+   * valence, or under Catmull-Clark a border vertex with two faces, or a
+   * border corner of one face that the mask keeps: the children around it
+   * become regular patches, which give the derivatives there too (the limit
+   * masks do not).
    */
-  static bool is_ordinary_corner(const Patch& patch, int i)
+  bool is_ordinary_corner(const Patch& patch, int i) const
   {
     Patch_halfedge h = patch.h0;
     for(int k = 0; k < i; ++k)
       h = patch.mesh.next(h);
     const auto corner = patch.mesh.target(h);
     const std::size_t valence = patch.mesh.degree(corner);
-    return patch.mesh.is_border(corner) ? quads && valence == 3 : valence == (quads ? 4u : 6u);
+    if(!patch.mesh.is_border(corner))
+      return valence == (quads ? 4u : 6u);
+    return quads && (valence == 3 || (valence == 2 && sharp_corners()));
   }
 
   // the limit position and normal of corner i of the patch's face (the masks of the analysis)

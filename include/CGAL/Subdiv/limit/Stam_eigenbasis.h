@@ -94,8 +94,8 @@ public:
    * derivatives), i.e. in the parameters of the patch `level` levels up
    * (up to the child's own factor).
    */
-  std::array<Eigen::RowVector3d, 6>
-  evaluate(const Matrix& coefficients, std::size_t k, int level, const Patch_weights<double, N>& w) const
+  std::array<Eigen::RowVector3d, 6> evaluate(const Matrix& coefficients, std::size_t k, int level,
+                                             const Patch_weights<double, N>& w) const
   {
     const auto eigen_weights = [&](const std::array<double, N>& basis, double factor) {
       Eigen::RowVectorXd row = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(basis.data()) * m_children[k];
@@ -103,7 +103,7 @@ public:
         row(i) *= std::pow(factor * m_lambda(i), level);
       return Eigen::RowVector3d(row * coefficients);
     };
-    return {eigen_weights(w.position, 1), eigen_weights(w.du, 2), eigen_weights(w.dv, 2),
+    return {eigen_weights(w.position, 1), eigen_weights(w.du, 2),  eigen_weights(w.dv, 2),
             eigen_weights(w.duu, 4),      eigen_weights(w.duv, 4), eigen_weights(w.dvv, 4)};
   }
 

@@ -44,33 +44,40 @@ public:
 
   Patch_points(const Mesh& mesh, halfedge_descriptor h0) : m(mesh), h0(h0), vpm(get(CGAL::vertex_point, mesh)) {}
 
-  // the side of the quad on the border (the edge from corner i to corner i+1), or -1 if none
-  int border_side() const
+  // the sides of the quad on the border: bit i for the edge from corner i to corner i+1
+  int border_sides() const
   {
+    int sides = 0;
     halfedge_descriptor h = next(h0, m);
     for(int i = 0; i < 4; ++i, h = next(h, m))
       if(CGAL::is_border(opposite(h, m), m))
-        return i;
-    return -1;
+        sides |= 1 << i;
+    return sides;
   }
 
   /*
    * Whether the face and the faces around its corners are all quads
    * (triangles) and its corners inner vertices of valence 4 (6); under
    * Catmull-Clark, also a quad with one side on the border, whose two ends
-   * have two faces, the other corners being inner of valence 4.
+   * have two faces, the other corners being inner of valence 4, and with
+   * `sharp_corners` (Border_corners::sharp) a quad with two adjacent sides
+   * on the border, whose common corner is a corner of one face (kept by the
+   * mask: the B-spline interpolates it), their other ends having two faces
+   * and the fourth corner being inner of valence 4.
    */
-  bool is_regular() const
+  bool is_regular(bool sharp_corners = false) const
   {
-    const int side = Quads ? border_side() : -1;
+    const int sides = Quads ? border_sides() : 0;
+    if((sides & 5) == 5 || (sides & 10) == 10 || (sides != 0 && (sides & (sides - 1)) != 0 && !sharp_corners))
+      return false; // opposite sides on the border, or a corner that is not kept
     int i = 0;
     for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
       const vertex_descriptor corner = target(h, m);
       // corner i ends side i - 1 (from corner i - 1) and starts side i
-      const bool on_border_side = side >= 0 && (side == i || (side + 1) % 4 == i);
+      const int on_border = ((sides >> i) & 1) + ((sides >> ((i + 3) % 4)) & 1);
       ++i;
-      if(on_border_side ? valence(corner) != 3 || !is_border(corner)
-                        : valence(corner) != regular_valence || is_border(corner))
+      if(on_border > 0 ? valence(corner) != std::size_t(4 - on_border) || !is_border(corner)
+                       : valence(corner) != regular_valence || is_border(corner))
         return false;
       if(!faces_around_are_regular(h))
         return false;
@@ -143,8 +150,11 @@ public:
    * the border has nothing beyond: its row (column) is extrapolated, p =
    * 2 b - q from the border point b and the inner one q behind it, so that
    * the B-spline refines as Catmull-Clark's border rules do (a border
-   * vertex 3/4, 1/8, 1/8; a border edge its midpoint) and its side is the
-   * cubic B-spline of the border points.
+   * vertex 3/4, 1/8, 1/8; a border edge its midpoint; a sharp corner stays)
+   * and its side is the cubic B-spline of the border points. With two sides
+   * on the border, the second extrapolation also makes the point beyond
+   * their common corner (the first one's there, read from points not made
+   * yet, is overwritten).
    */
   std::array<Point, 16> quad_control_points() const
   {
@@ -152,25 +162,27 @@ public:
     h[0] = h0;
     for(int i = 1; i < 4; ++i)
       h[i] = next(h[i - 1], m);
-    const int side = border_side();
+    const int sides = border_sides();
     // by corner i: its point, the neighbours across the edge to corner i+1
     // (next to corner i, then to corner i+1), and its diagonal neighbour
     static const int corner_point[4] = {5, 6, 10, 9};
     static const int across[4][2] = {{1, 2}, {7, 11}, {14, 13}, {8, 4}};
     static const int diagonal[4] = {0, 3, 15, 12};
     std::array<Point, 16> points;
+    points.fill(Point(CGAL::ORIGIN));
     for(int i = 0; i < 4; ++i) {
       points[corner_point[i]] = get(vpm, target(h[i], m));
-      if(i == side) // nothing beyond
+      if((sides >> i) & 1) // nothing beyond
         continue;
       const halfedge_descriptor beyond = opposite(h[(i + 1) % 4], m); // across the edge from corner i to corner i+1
       points[across[i][0]] = get(vpm, target(next(beyond, m), m));
       points[across[i][1]] = get(vpm, target(next(next(beyond, m), m), m));
-      if(side < 0 || (side + 1) % 4 != i) // corner i's diagonal face is not beyond the border
+      if(!((sides >> ((i + 3) % 4)) & 1)) // corner i's diagonal face is not beyond the border
         points[diagonal[i]] = get(vpm, source(prev(opposite(next(beyond, m), m), m), m));
     }
-    if(side >= 0)
-      extrapolate_beyond(side, points);
+    for(int side = 0; side < 4; ++side)
+      if((sides >> side) & 1)
+        extrapolate_beyond(side, points);
     return points;
   }
 
