@@ -332,3 +332,71 @@ TEST(LimitSurface, derivatives_at_ordinary_vertices_of_the_local_refinement)
     EXPECT_LT(std::sqrt((s.normal - t.normal).squared_length()), 1e-13);
   }
 }
+
+/*
+ * Limit stencils at locations: applied to the mesh's points they give what
+ * evaluate() gives (exactly in an exact kernel: quads, sub-quads, Loop
+ * triangles); applied to moved points, what an evaluator of the moved mesh
+ * gives (double: the Stam eigenbasis path too).
+ */
+template <class M, class Mask>
+void expect_stencils_to_evaluate(M mesh, const Mask& mask, double tolerance)
+{
+  using Surface = S::Limit_surface<M, Mask>;
+  using Point = typename M::Point;
+  constexpr bool quads = std::is_same_v<Mask, S::Catmull_clark_mask<M>>;
+  std::vector<typename Surface::Location> locations;
+  for(const auto f : mesh.faces()) {
+    const int corners = static_cast<int>(mesh.degree(f));
+    for(const auto& [u, v] : {std::make_pair(0.0, 0.0), {0.25, 0.5}, {0.0625, 0.125}, {0.5, 0.375}})
+      locations.push_back({f, quads && corners != 4 ? corners - 1 : -1, u, v});
+  }
+  const auto compare = [&](const Surface& surface,
+                           const S::Limit_location_stencils<typename CGAL::Kernel_traits<Point>::Kernel::FT>& tables) {
+    std::vector<Point> points(mesh.points().begin(), mesh.points().end()), position, du, dv, duv;
+    tables.position.apply(points, position);
+    tables.du.apply(points, du);
+    tables.dv.apply(points, dv);
+    tables.duv.apply(points, duv);
+    ASSERT_EQ(position.size(), locations.size());
+    for(std::size_t i = 0; i < locations.size(); ++i) {
+      const auto& at = locations[i];
+      const S::Limit_sample s = [&] {
+        if constexpr(quads)
+          if(at.corner >= 0)
+            return surface.evaluate(at.face, at.corner, at.u, at.v);
+        return surface.evaluate(at.face, at.u, at.v);
+      }();
+      const auto as_vector = [](const Point& p) {
+        return S::Limit_sample::Vector(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      };
+      EXPECT_LE(std::sqrt((as_vector(position[i]) - (s.position - CGAL::ORIGIN)).squared_length()), tolerance) << i;
+      EXPECT_LE(std::sqrt((as_vector(du[i]) - s.du).squared_length()), tolerance * 16) << i;
+      EXPECT_LE(std::sqrt((as_vector(dv[i]) - s.dv).squared_length()), tolerance * 16) << i;
+      EXPECT_LE(std::sqrt((as_vector(duv[i]) - s.duv).squared_length()), tolerance * 256) << i;
+    }
+  };
+  const Surface surface(mesh, mask);
+  const auto tables = surface.stencil_tables(locations);
+  EXPECT_EQ(tables.position.number_of_stencils(), locations.size());
+  compare(surface, tables);
+  for(const auto v : mesh.vertices()) // moved control points, the same tables
+    mesh.point(v) = mesh.point(v) + typename CGAL::Kernel_traits<Point>::Kernel::Vector_3(
+                                      int(v.idx() % 3), int(v.idx() % 5) - 2, int(v.idx() % 2));
+  compare(Surface(mesh, mask), tables);
+}
+
+TEST(LimitSurface, stencil_tables_re_evaluate_the_locations)
+{
+  expect_stencils_to_evaluate(testing_utils::mixed_box<Exact_mesh>(), S::Catmull_clark_mask<Exact_mesh>(), 0);
+  expect_stencils_to_evaluate(testing_utils::bipyramid<Exact_mesh>(5), S::Loop_mask<Exact_mesh>(), 0);
+  Mesh quads = testing_utils::prism<Mesh>(5);
+  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+  expect_stencils_to_evaluate(quads, S::Catmull_clark_mask<Mesh>(), 1e-12);
+  Mesh triangles = testing_utils::bipyramid<Mesh>(5);
+  S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+  expect_stencils_to_evaluate(triangles, S::Loop_mask<Mesh>(), 1e-12);
+  const Mesh box = testing_utils::mixed_box<Mesh>();
+  const S::Limit_surface<Mesh> surface(box);
+  EXPECT_THROW(surface.stencil_tables({{*box.faces().begin(), -1, 2.0, 0.5}}), S::Bad_input);
+}

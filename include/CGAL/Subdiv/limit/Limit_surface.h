@@ -19,6 +19,7 @@
 #include <CGAL/Subdiv/limit/project_to_limit.h>
 #include <CGAL/Subdiv/masks/Catmull_clark_mask.h>
 #include <CGAL/Subdiv/masks/Loop_mask.h>
+#include <CGAL/Subdiv/stencils/Stencil_table.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -31,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
@@ -57,6 +59,22 @@ struct Limit_sample
   Vector du = CGAL::NULL_VECTOR, dv = CGAL::NULL_VECTOR;
   Vector duu = CGAL::NULL_VECTOR, duv = CGAL::NULL_VECTOR, dvv = CGAL::NULL_VECTOR;
   Vector normal = CGAL::NULL_VECTOR;
+};
+
+/*!
+ * \ingroup PkgSubdivStencils
+ * Limit stencils at (face, u, v) locations (`Limit_surface::stencil_tables()`):
+ * row i of each table belongs to location i, its sources are the vertices of
+ * the mesh.
+ */
+template <class FT>
+struct Limit_location_stencils
+{
+  Stencil_table<FT> position;      ///< the limit point (weights summing to 1)
+  Stencil_table<FT> du, dv;        ///< the first derivatives (weights summing to 0)
+  Stencil_table<FT> duu, duv, dvv; ///< the second derivatives
+  /// the six tables, in the order above
+  std::array<Stencil_table<FT>*, 6> all() { return {&position, &du, &dv, &duu, &duv, &dvv}; }
 };
 
 namespace internal {
@@ -192,16 +210,7 @@ public:
   /// if `f` is a Catmull-Clark face with n != 4 corners, or (u, v) is not in its domain
   Limit_sample evaluate(face_descriptor f, double u, double v) const
   {
-    check_parameters(u, v);
-    if constexpr(quads) {
-      const int corners = degree_of(f);
-      if(corners != 4)
-        internal::refuse(internal::Message()
-                         << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
-                         << corners << " sub-quads (face, corner, u, v)");
-    } else if(!(u + v <= 1))
-      internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
-                                           << std::to_string(v) << ") is not in the triangle's domain (u + v <= 1)");
+    check_location({f, -1, u, v});
     if(std::optional<Exact_sample> s = evaluate_directly(*m_mesh, halfedge(f, *m_mesh), FT(u), FT(v), 0))
       return to_sample(*s);
     return to_sample(evaluate_face(local_patch(*m_mesh, f), FT(u), FT(v), 0));
@@ -211,18 +220,71 @@ public:
   Limit_sample evaluate(face_descriptor f, int corner, double u, double v) const
   {
     static_assert(quads, "Limit_surface: sub-quads are Catmull-Clark's");
-    check_parameters(u, v);
-    const int corners = degree_of(f);
-    if(corners == 4)
-      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f)
-                                           << " is a quad: address it as (face, u, v), without a corner");
-    if(corner < 0 || corner >= corners)
-      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner
-                                           << " (it has " << corners << ")");
-    // one level makes the sub-quad a quad of its own, with the same (u, v)
-    Patch patch = local_patch(*m_mesh, f);
-    const Child child = refine_and_find(patch, {corner, {0, 0}, {0, 0}});
-    return to_sample(evaluate_face(local_patch(child.mesh, child.face_h0), FT(u), FT(v), 1));
+    if(corner < 0)
+      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner);
+    check_location({f, corner, u, v});
+    return to_sample(evaluate_patch(local_patch(*m_mesh, f), corner, FT(u), FT(v)));
+  }
+
+  /// a parameter: (face, u, v), or (face, corner, u, v) for a Catmull-Clark sub-quad (corner -1: none)
+  struct Location
+  {
+    face_descriptor face;
+    int corner = -1;
+    double u = 0, v = 0;
+  };
+
+  /*!
+   * Limit stencils at `locations`, like OpenSubdiv's `LimitStencilTable`:
+   * row i of each table is location i, its sources the vertices of the mesh
+   * in the order of `vertices(mesh)`, its weights those of the position
+   * (summing to 1) and of each derivative (summing to 0) in the mesh's
+   * number type, exact in an exact kernel. So `position.apply(points)` and
+   * `du.apply(points)` re-evaluate the locations for moved control points
+   * in one sparse pass (a derivative comes out as the point whose
+   * coordinates are the vector's). The evaluation is linear in the control
+   * points, so the weights are the evaluations of each location's patch
+   * with its points set to unit points, three at a time: the same code path
+   * as `evaluate()`, no rule written twice. No normal row: the normal is not
+   * linear. \throws Bad_input for a location `evaluate()` refuses.
+   */
+  Limit_location_stencils<FT> stencil_tables(const std::vector<Location>& locations) const
+  {
+    const internal::Mesh_numbering<PolygonMesh> number(*m_mesh);
+    const std::size_t sources = num_vertices(*m_mesh);
+    Limit_location_stencils<FT> tables;
+    for(Stencil_table<FT>* table : tables.all())
+      *table = Stencil_table<FT>(sources);
+    for(const Location& at : locations)
+      check_location(at);
+    std::array<std::vector<std::pair<std::size_t, FT>>, 6> rows;
+    for(const Location& at : locations) {
+      std::vector<vertex_descriptor> patch_sources;
+      const Patch patch = local_patch(*m_mesh, halfedge(at.face, *m_mesh), &patch_sources);
+      for(auto& row : rows)
+        row.clear();
+      for(std::size_t first = 0; first < patch_sources.size(); first += 3) {
+        Patch unit = patch;
+        for(std::size_t j = 0; j < patch_sources.size(); ++j) {
+          const auto coordinate = [&](std::size_t d) { return j == first + d ? FT(1) : FT(0); };
+          unit.mesh.point(typename Patch_mesh::Vertex_index(static_cast<std::uint32_t>(j))) =
+            Point(coordinate(0), coordinate(1), coordinate(2));
+        }
+        const Exact_sample s = evaluate_patch(std::move(unit), at.corner, FT(at.u), FT(at.v));
+        const std::array<Vector, 6> values = {s.position - CGAL::ORIGIN, s.du, s.dv, s.duu, s.duv, s.dvv};
+        for(std::size_t d = 0; d < 3 && first + d < patch_sources.size(); ++d)
+          for(std::size_t q = 0; q < 6; ++q)
+            if(values[q][int(d)] != FT(0))
+              rows[q].emplace_back(number(patch_sources[first + d]), values[q][int(d)]);
+      }
+      const auto all = tables.all();
+      for(std::size_t q = 0; q < 6; ++q) {
+        if(rows[q].empty()) // a table's rows have a term (a derivative at an extraordinary vertex: zero)
+          rows[q].emplace_back(number(patch_sources[0]), FT(0));
+        all[q]->add_stencil(rows[q]);
+      }
+    }
+    return tables;
   }
 
 private:
@@ -253,11 +315,43 @@ private:
     return internal::Mesh_numbering<PolygonMesh>(*m_mesh)(e);
   }
 
-  static void check_parameters(double u, double v)
+  // refuses a location outside its face's domain, or addressed with a wrong corner
+  void check_location(const Location& at) const
   {
+    const auto [f, corner, u, v] = at;
     if(!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
       internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
                                            << std::to_string(v) << ") is not in the face's domain [0, 1]^2");
+    if constexpr(!quads) {
+      if(corner >= 0)
+        internal::refuse(internal::Message()
+                         << "Limit_surface: a corner (" << corner << ") is for Catmull-Clark's sub-quads");
+      if(!(u + v <= 1))
+        internal::refuse(internal::Message() << "Limit_surface: the parameter (" << std::to_string(u) << ", "
+                                             << std::to_string(v) << ") is not in the triangle's domain (u + v <= 1)");
+      return;
+    }
+    const int corners = degree_of(f);
+    if(corner < 0 && corners != 4)
+      internal::refuse(internal::Message()
+                       << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
+                       << corners << " sub-quads (face, corner, u, v)");
+    if(corner >= 0 && corners == 4)
+      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f)
+                                           << " is a quad: address it as (face, u, v), without a corner");
+    if(corner >= corners)
+      internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner
+                                           << " (it has " << corners << ")");
+  }
+
+  // the limit at (u, v) of the patch's face, or of its sub-quad at `corner` (>= 0)
+  Exact_sample evaluate_patch(Patch patch, int corner, const FT& u, const FT& v) const
+  {
+    if(corner < 0)
+      return evaluate_face(std::move(patch), u, v, 0);
+    // one level makes the sub-quad a quad of its own, with the same (u, v)
+    const Child child = refine_and_find(patch, {corner, {0, 0}, {0, 0}});
+    return evaluate_face(local_patch(child.mesh, child.face_h0), u, v, 1);
   }
 
   int degree_of(face_descriptor f) const
@@ -277,8 +371,10 @@ private:
     return local_patch(mesh, halfedge(f, mesh));
   }
 
+  // (`sources`, if given: the vertex of `mesh` of each vertex of the patch, in order)
   template <class Source>
-  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0)
+  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0,
+                           std::vector<typename boost::graph_traits<Source>::vertex_descriptor>* sources = nullptr)
   {
     using Source_face = typename boost::graph_traits<Source>::face_descriptor;
     using Source_vertex = typename boost::graph_traits<Source>::vertex_descriptor;
@@ -296,8 +392,11 @@ private:
       corners.clear();
       for(const Source_vertex w : CGAL::vertices_around_face(halfedge(g, mesh), mesh)) {
         auto [it, fresh] = copy.emplace(w, typename Patch_mesh::Vertex_index());
-        if(fresh)
+        if(fresh) {
           it->second = patch.mesh.add_vertex(get(vpm, w));
+          if(sources != nullptr)
+            sources->push_back(w);
+        }
         corners.push_back(it->second);
       }
       if(patch.mesh.add_face(corners) == Patch_mesh::null_face())
