@@ -66,6 +66,15 @@ Mesh mesh_from_soup(const Soup& soup)
 enum class Scheme { loop, catmull_clark, doo_sabin, sqrt3 };
 std::string scheme_name(Scheme scheme);
 
+/// a parameter of the limit surface: (u, v) in the quad (Catmull-Clark) or
+/// triangle (Loop) `face`, the face's number in the Soup and the Surface_mesh,
+/// its corner 0 at (0, 0), its corner 1 at (1, 0)
+struct Limit_location
+{
+  int face;
+  double u, v;
+};
+
 /// a timed piece of work (see the top of this file)
 class Job
 {

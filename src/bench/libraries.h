@@ -9,6 +9,7 @@
 #include "bench.h"
 
 #include <string>
+#include <vector>
 
 namespace subdiv_bench {
 
@@ -39,6 +40,25 @@ Apply_ptr ours_apply(const Input& input, Scheme scheme, int levels);
 /// the same refinements with CGAL::Epick or CGAL::Epeck points (exact.cpp)
 Job_ptr ours_refinement_kernel(const Input& input, Scheme scheme, int levels, bool exact);
 Job_ptr cgal_refinement_kernel(const Input& input, Scheme scheme, int levels, bool exact);
+/// the limit surface (Loop or Catmull-Clark; nullptr for the other schemes):
+/// `Limit_surface<Mesh, Mask>` made, then evaluated once in every face (at
+/// u = v = 1/4; a Catmull-Clark face with n != 4 corners in its sub-quad at
+/// corner 0), which builds the Stam eigenbases the mesh needs (a face where
+/// it throws `Bad_input` gets a NaN point)
+Job_ptr ours_limit_build(const Input& input, Scheme scheme);
+/// `Limit_surface::evaluate(f, u, v)` once at every location, outside any
+/// timer: `refused[i]` whether it throws `Bad_input` there; returns the first
+/// message (empty if none)
+std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                                std::vector<bool>& refused);
+/// `Limit_surface::evaluate(f, u, v)` at every location, the surface made and
+/// its eigenbases built outside the timer; output points: the positions, in
+/// the order of the locations
+Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations);
+/// `tessellate(surface, out, rate, output_normals(true))`, the surface made
+/// outside the timer; output points: the vertices of `out` (none if it
+/// throws `Bad_input`)
+Job_ptr ours_tessellation(const Input& input, Scheme scheme, int rate);
 
 // --- OpenMesh (peer_openmesh.cpp) ------------------------------------------------
 
@@ -65,6 +85,20 @@ Apply_ptr osd_apply(const Soup& input, Scheme scheme, int levels);
 /// Osd::OmpEvaluator::EvalStencils on a float table (what Debian's libosdCPU
 /// offers for several threads; floats, so it moves fewer bytes)
 Apply_ptr osd_apply_omp_float(const Soup& input, Scheme scheme, int levels);
+/// Bfr's limit surface, with Sdc options as above: the `Far::TopologyRefiner`
+/// of the base mesh (not refined) and a `Bfr::RefinerSurfaceFactory<>` on it
+Job_ptr osd_limit_build(const Soup& input, Scheme scheme);
+/// P, Du and Dv at every location (`Bfr::Surface<double>::Evaluate`): either
+/// `InitVertexSurface` + `PreparePatchPoints` + `Evaluate` for each location,
+/// or (`per_face`) one surface per face, then all of that face's locations;
+/// output points: the positions, in the order of the locations
+Job_ptr osd_limit_evaluation(const Soup& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                             bool per_face);
+/// every face: `InitVertexSurface` + `PreparePatchPoints`, `Bfr::Tessellation`
+/// at the uniform rate (quads kept under Catmull-Clark), P, Du and Dv at each
+/// of its coordinates and the unit normal; output points: every face's points
+/// (those on an edge once per face)
+Job_ptr osd_tessellation(const Soup& input, Scheme scheme, int rate);
 
 } // namespace subdiv_bench
 

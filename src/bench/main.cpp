@@ -8,7 +8,8 @@
 //   build/src/subdiv-bench [--runs N] [--quick] [--write-doc] [--no-memory] [--meshes DIR]
 //
 // Sections: full refinement, stencil table build, stencil apply (1 and 2
-// threads) against a STREAM-like bandwidth baseline, peak memory (each run in
+// threads) against a STREAM-like bandwidth baseline, the limit surface (build,
+// evaluation, tessellation, against Bfr), peak memory (each run in
 // a child process), agreement of the points, exact kernels. Every time is the
 // minimum of N runs (default 3) after a warm-up; input construction, copies
 // and file reading are outside the timers. Targets of issue 5 are checked and
@@ -30,6 +31,7 @@
 #include <ctime>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -650,6 +652,244 @@ void apply_section(const Options& options)
   });
 }
 
+// --- the limit surface (issue 13) -------------------------------------------------
+
+// the evaluation rows (the levels unused) and the tessellation rows (the
+// levels: the rate); the mixed torus is evaluated, not tessellated: ours
+// refines locally around each of its n-gons and extraordinary vertices, about
+// a minute per tessellation at rate 4
+const std::vector<Case> limit_plan = {
+  {Scheme::catmull_clark, "mixed", {0}},
+  {Scheme::catmull_clark, "quad200k", {0}},
+  {Scheme::loop, "tri20k", {0}},
+  {Scheme::loop, "fandisk", {0}},
+};
+const std::vector<Case> tessellation_plan = {
+  {Scheme::catmull_clark, "quad200k", {4}},
+  {Scheme::catmull_clark, "spot", {4}},
+  {Scheme::loop, "tri20k", {4}},
+  {Scheme::loop, "fandisk", {4}},
+};
+
+std::size_t limit_location_count(const Options& options)
+{
+  return options.quick ? 2000 : 20000;
+}
+
+// whether Limit_surface takes the input: Loop on closed triangle meshes only
+bool limit_fits(const Input& in, Scheme scheme)
+{
+  return scheme == Scheme::catmull_clark || (scheme == Scheme::loop && in.triangles && !in.border);
+}
+
+// `count` random locations (fixed seed) in the quads (Catmull-Clark) or the
+// triangles (Loop) of the input, u and v uniform (reflected into u + v <= 1 in
+// a triangle), less those where ours refuses to evaluate (a defect of the
+// library, reported): how many in `refused`, the first message in `refusal`
+std::vector<Limit_location> limit_locations(const Input& in, Scheme scheme, std::size_t count, std::size_t& refused,
+                                            std::string& refusal)
+{
+  const int size = scheme == Scheme::loop ? 3 : 4;
+  std::vector<int> domains;
+  for(std::size_t f = 0; f < in.soup.face_sizes.size(); ++f)
+    if(in.soup.face_sizes[f] == size)
+      domains.push_back(static_cast<int>(f));
+  std::vector<Limit_location> locations;
+  refused = 0;
+  if(domains.empty())
+    return locations;
+  std::mt19937 random(20261207u);
+  std::uniform_int_distribution<std::size_t> pick(0, domains.size() - 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for(std::size_t i = 0; i < count; ++i) {
+    const int face = domains[pick(random)];
+    double u = unit(random), v = unit(random);
+    if(size == 3 && u + v > 1) {
+      u = 1 - u;
+      v = 1 - v;
+    }
+    locations.push_back({face, u, v});
+  }
+  std::vector<bool> refuses;
+  refusal = ours_limit_refusals(in, scheme, locations, refuses);
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < locations.size(); ++i)
+    if(!refuses[i])
+      locations[kept++] = locations[i];
+  refused = locations.size() - kept;
+  locations.resize(kept);
+  return locations;
+}
+
+// whether the face is a regular patch: its corners inner, of valence 4 with
+// quads only around them (Catmull-Clark) or of valence 6 (Loop); both
+// libraries evaluate it as a B-spline or box-spline patch, exactly
+bool regular_patch(const Mesh& mesh, Mesh::Face_index f, Scheme scheme)
+{
+  const unsigned valence = scheme == Scheme::loop ? 6 : 4, size = scheme == Scheme::loop ? 3 : 4;
+  for(const Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+    if(mesh.is_border(mesh.target(h)) || mesh.degree(mesh.target(h)) != valence)
+      return false;
+    for(const Mesh::Halfedge_index g : CGAL::halfedges_around_target(h, mesh))
+      if(mesh.degree(mesh.face(g)) != size)
+        return false;
+  }
+  return true;
+}
+
+double distance(const P3& a, const P3& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// "scheme, input" of a row of the limit section
+std::string limit_where(const Row_case& rc)
+{
+  return scheme_name(rc.c.scheme) + ", " + rc.in.name;
+}
+
+void limit_evaluation_rows(const Options& options)
+{
+  const std::size_t count = limit_location_count(options);
+  std::string refusals;
+  for_each_row(limit_plan, [&](const Row_case& rc) {
+    const Scheme scheme = rc.c.scheme;
+    const Input& in = rc.in;
+    if(!limit_fits(in, scheme))
+      return;
+    std::size_t refused = 0;
+    std::string refusal;
+    const std::vector<Limit_location> locations = limit_locations(in, scheme, count, refused, refusal);
+    const std::string where = limit_where(rc);
+    if(refused > 0) {
+      refusals += "- " + where + ": ours refuses " + std::to_string(refused) + " of " + std::to_string(count) +
+                  " locations (`Bad_input`: \"" + refusal + "\"); they are left out of the row, for both.\n";
+      missed.push_back("limit evaluation everywhere, " + where + ": refuses " + std::to_string(refused) + " of " +
+                       std::to_string(count) + " locations (" + refusal + ")");
+    }
+    if(locations.empty())
+      return;
+    Job_ptr build[2] = {ours_limit_build(in, scheme), osd_limit_build(in.soup, scheme)};
+    Job_ptr eval[3] = {ours_limit_evaluation(in, scheme, locations),
+                       osd_limit_evaluation(in.soup, scheme, locations, false),
+                       osd_limit_evaluation(in.soup, scheme, locations, true)};
+    const std::vector<double> tb = time_jobs({build[0].get(), build[1].get()}, options.runs);
+    const std::vector<double> te = time_jobs({eval[0].get(), eval[1].get(), eval[2].get()}, options.runs);
+    const double n = static_cast<double>(locations.size());
+    const double ns[3] = {te[0] / n * 1e9, te[1] / n * 1e9, te[2] / n * 1e9};
+    std::size_t regular = 0;
+    std::vector<bool> is_regular;
+    for(const Limit_location& at : locations) {
+      is_regular.push_back(regular_patch(in.mesh, Mesh::Face_index(static_cast<Mesh::size_type>(at.face)), scheme));
+      regular += is_regular.back() ? 1 : 0;
+    }
+    std::string row = "| " + scheme_name(scheme) + " | " + in.name + " | " + std::to_string(in.mesh.number_of_faces()) +
+                      " | " + seconds(tb[0]) + " | " + (build[1] ? seconds(tb[1]) : "-") + " | " +
+                      std::to_string(locations.size()) + " | " + fixed(100.0 * static_cast<double>(regular) / n, 0) +
+                      " % | " + fixed(ns[0], 0) + " | ";
+    if(!eval[1]) {
+      out(row + "- | - | - | - | | - | - |\n");
+      return;
+    }
+    const std::vector<P3> mine = eval[0]->output_points(), theirs = eval[1]->output_points();
+    double worst[2] = {0, 0}; // regular, other
+    bool complete = true;
+    for(std::size_t i = 0; i < locations.size(); ++i) {
+      const double d = distance(mine[i], theirs[i]) / in.diagonal;
+      complete = complete && std::isfinite(d);
+      double& w = worst[is_regular[i] ? 0 : 1];
+      w = std::isfinite(d) ? std::max(w, d) : w;
+    }
+    std::string regular_distance = regular > 0 ? scientific(worst[0]) : "(none)";
+    if(!complete || worst[0] > 1e-12) {
+      regular_distance = "**" + regular_distance + (complete ? "" : ", a point missing") + " DIFFER**";
+      missed.push_back("limit positions agree with Bfr on regular patches to 1e-12, " + where);
+    }
+    row += fixed(ns[1], 0) + " | " + fixed(ns[2], 0) + " | " + fixed(ns[1] / ns[0]) + " | " + fixed(ns[2] / ns[0]) +
+           " | " +
+           check(ns[0] < ns[1], "limit evaluation faster than Bfr per location, " + where,
+                 fixed(ns[0], 0) + " ns vs " + fixed(ns[1], 0) + " ns") +
+           " | " + regular_distance + " | " + (regular < locations.size() ? scientific(worst[1]) : "(none)") + " |";
+    out(row + "\n");
+  });
+  if(!refusals.empty())
+    out("\n" + refusals);
+}
+
+void tessellation_rows(const Options& options)
+{
+  for_each_row(tessellation_plan, [&](const Row_case& rc) {
+    const Scheme scheme = rc.c.scheme;
+    const Input& in = rc.in;
+    if(!limit_fits(in, scheme))
+      return;
+    Job_ptr tess[2] = {ours_tessellation(in, scheme, rc.levels), osd_tessellation(in.soup, scheme, rc.levels)};
+    const std::vector<double> t = time_jobs({tess[0].get(), tess[1].get()}, options.runs);
+    const double points[2] = {static_cast<double>(tess[0]->output_points().size()),
+                              tess[1] ? static_cast<double>(tess[1]->output_points().size()) : nan_value};
+    const double rate[2] = {points[0] / t[0], points[1] / t[1]};
+    std::string row = "| " + scheme_name(scheme) + " | " + in.name + " | " + std::to_string(rc.levels) + " | ";
+    if(points[0] == 0) {
+      row += "**refused** | - | - | ";
+      missed.push_back("tessellation, " + limit_where(rc) + ": `tessellate` throws Bad_input");
+    } else {
+      row += seconds(t[0]) + " | " + std::to_string(static_cast<std::size_t>(points[0])) + " | " +
+             fixed(rate[0] / 1e6) + " | ";
+    }
+    if(tess[1])
+      row += seconds(t[1]) + " | " + std::to_string(static_cast<std::size_t>(points[1])) + " | " +
+             fixed(rate[1] / 1e6) + " | " + (points[0] > 0 ? fixed(t[1] / t[0]) : "-") + " | " +
+             (points[0] > 0 ? fixed(rate[0] / rate[1]) : "-") + " |\n";
+    else
+      row += "- | - | - | - | - |\n";
+    out(row);
+  });
+}
+
+void limit_section(const Options& options)
+{
+  out("\n## Limit surface evaluation (issue 13)\n\n" + minimum_of_runs(options.runs) +
+      " after a warm-up, one thread. Ours: `CGAL::Subdiv::Limit_surface<Mesh, Mask>` (Catmull-Clark or Loop "
+      "mask); OpenSubdiv: `Bfr::RefinerSurfaceFactory<>` over a `Far::TopologyRefiner` of the same faces (the Sdc "
+      "options above, Bfr's default options), `Bfr::Surface<double>`.\n\n"
+      "- `build`: ours = constructing the `Limit_surface` and evaluating it once in every face (u = v = 1/4; a "
+      "face with n != 4 corners in its sub-quad at corner 0), which builds the Stam eigenbases of the valences it "
+      "meets (once per valence); Bfr = creating the refiner (not refined) and the factory (Bfr does its per-face "
+      "work in `InitVertexSurface`, timed with the evaluations).\n"
+      "- `eval`: ns per evaluation of the position and its first derivatives at " +
+      std::to_string(limit_location_count(options)) +
+      " random (face, u, v) locations (fixed seed, the same for both), in quads only under Catmull-Clark (so no "
+      "sub-quad and Bfr parameterisation of an n-gon to match) and in triangles under Loop. Ours: "
+      "`evaluate(f, u, v)`, which also makes the second derivatives and the normal; `Bfr loc`: "
+      "`InitVertexSurface` + `PreparePatchPoints` + `Evaluate(uv, patchPoints, 3, P, Du, Dv)` for each location "
+      "(what scattered points cost); `Bfr face`: the locations sorted by face, one surface per face, then all of "
+      "its locations. `regular`: the share of the locations in a regular patch (corners of valence 4 with quads "
+      "around, or of valence 6), the rest in a patch at an extraordinary vertex or next to an n-gon. Target "
+      "(issue 13): one evaluation faster than Bfr's per location.\n"
+      "- `dist`: the largest distance between the positions of ours and Bfr's, over the bounding-box diagonal, at "
+      "the locations in regular patches (both exact there: above 1e-12 is marked DIFFER) and at the others, "
+      "where Bfr stops refining at its approximation level (2) and puts a Gregory patch at the extraordinary "
+      "corner, which only approximates the limit.\n\n"
+      "| scheme | input | faces | build ours | build Bfr | locations | regular | eval ours ns | Bfr loc ns | Bfr "
+      "face ns | Bfr loc/ours | Bfr face/ours | target faster than Bfr loc | dist regular | dist other |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
+  limit_evaluation_rows(options);
+  out(
+    "\nTessellation, seconds for the whole mesh at a uniform rate (every edge cut in `rate`), the surface made "
+    "outside the timer. Ours: `tessellate(surface, out, rate, output_normals(true))` into a `Surface_mesh` of "
+    "quads (triangles under Loop), every point on a mesh edge or vertex evaluated once and shared; an n-gon as "
+    "n sub-quads at half the rate. Bfr: for every face `InitVertexSurface` + `PreparePatchPoints`, "
+    "`Bfr::Tessellation` at the same rate (`PreserveQuads` under Catmull-Clark) for its coordinates and "
+    "facets, then P, Du, Dv and the unit normal at each coordinate into arrays (no mesh: a point on an edge is "
+    "evaluated by both of its faces, a vertex by all of its faces). `points`: the points each evaluates; "
+    "`Mpt/s`: millions of them per second; `Bfr time/ours`: the same surface, Bfr's time over ours; `ours/Bfr "
+    "pt/s`: the ratio of the point rates. No target. The mixed torus is not tessellated here: ours refines "
+    "locally at every n-gon and extraordinary vertex, about a minute at rate 4.\n\n"
+    "| scheme | input | rate | ours s | ours points | ours Mpt/s | Bfr s | Bfr points | Bfr Mpt/s | Bfr "
+    "time/ours | ours/Bfr pt/s |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  tessellation_rows(options);
+}
+
 // --- peak memory ------------------------------------------------------------------
 
 std::string self_path()
@@ -872,6 +1112,12 @@ int profile(int argc, char** argv, int at, const Options& options)
     return 1;
   }
   Job_ptr job;
+  std::vector<Limit_location> locations; // the limit section's, for the limit peers
+  if(peer.find("-limit") != std::string::npos && limit_fits(in, scheme)) {
+    std::size_t refused = 0;
+    std::string refusal;
+    locations = limit_locations(in, scheme, limit_location_count(options), refused, refusal);
+  }
   for(int p = 0; p < number_of_peers; ++p)
     if(peer == peer_names[p] || (p == osd && peer == "OSD"))
       job = refinement(static_cast<Peer>(p), in, scheme, levels);
@@ -889,6 +1135,16 @@ int profile(int argc, char** argv, int at, const Options& options)
     job = osd_stencil_build(in.soup, scheme, levels, false);
   else if(peer == "SM-resize")
     job = surface_mesh_resize_floor(in, scheme, levels);
+  else if(peer == "ours-limit")
+    job = ours_limit_evaluation(in, scheme, locations);
+  else if(peer == "OSD-limit")
+    job = osd_limit_evaluation(in.soup, scheme, locations, false);
+  else if(peer == "OSD-limit-per-face")
+    job = osd_limit_evaluation(in.soup, scheme, locations, true);
+  else if(peer == "ours-tessellate")
+    job = ours_tessellation(in, scheme, levels);
+  else if(peer == "OSD-tessellate")
+    job = osd_tessellation(in.soup, scheme, levels);
   if(!job) {
     std::printf("subdiv-bench: no job '%s' for %s\n", peer.c_str(), scheme_name(scheme).c_str());
     return 1;
@@ -946,7 +1202,8 @@ int main(int argc, char** argv)
         "before --profile, it applies there too). --meshes: the shared mesh directory (default %s).\n"
         "--profile: only run one job REPEATS times (default 10), for perf; PEER: ours, CGAL, OpenMesh, OSD,\n"
         "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the "
-        "floor); SCHEME: Loop, "
+        "floor),\nours-limit, OSD-limit, OSD-limit-per-face (the limit section's evaluations; LEVELS ignored),\n"
+        "ours-tessellate, OSD-tessellate (LEVELS: the rate); SCHEME: Loop, "
         "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
         "quad200k, mixed, border, fandisk, mushroom, spot, fandisk-creased, rook-creased, tri200k-uv, quad200k-uv.\n",
         SUBDIV_BENCH_MESH_DIR);
@@ -1026,6 +1283,7 @@ int main(int argc, char** argv)
   uv_refinement_section(options);
   stencil_build_section(options);
   apply_section(options);
+  limit_section(options);
   if(options.memory)
     memory_section(options);
   agreement_section();

@@ -7,10 +7,14 @@
 #include "threads_parameter.h"
 
 #include <CGAL/Subdiv/Carried_data.h>
+#include <CGAL/Subdiv/limit/Limit_surface.h>
+#include <CGAL/Subdiv/limit/tessellate.h>
 #include <CGAL/Subdiv/stencils/make_stencil_table.h>
 #include <CGAL/Subdiv/surface_subdivision.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
+#include <cmath>
+#include <optional>
 #include <thread>
 #include <type_traits>
 
@@ -171,7 +175,167 @@ private:
   Mesh m_mesh;
 };
 
+// --- the limit surface -------------------------------------------------------------
+
+using Cc_limit = CGAL::Subdiv::Limit_surface<Mesh, CGAL::Subdiv::Catmull_clark_mask<Mesh>>;
+using Loop_limit = CGAL::Subdiv::Limit_surface<Mesh, CGAL::Subdiv::Loop_mask<Mesh>>;
+
+P3 p3(const CGAL::Subdiv::Limit_sample::Point& p)
+{
+  return {p.x(), p.y(), p.z()};
+}
+
+// the evaluator made, then evaluated once in every face (this builds the
+// Stam eigenbases of the valences it meets)
+template <class Surface>
+class Limit_build_job : public Job
+{
+public:
+  explicit Limit_build_job(const Mesh& input) : m_input(input) {}
+  void prepare() override
+  {
+    m_surface.reset();
+    m_points.clear();
+    m_points.reserve(m_input.number_of_faces());
+  }
+  void run() override
+  {
+    const Surface& surface = m_surface.emplace(m_input);
+    for(const Mesh::Face_index f : m_input.faces()) {
+      try {
+        if constexpr(std::is_same_v<Surface, Cc_limit>)
+          if(m_input.degree(f) != 4) {
+            m_points.push_back(p3(surface.evaluate(f, 0, 0.25, 0.25).position));
+            continue;
+          }
+        m_points.push_back(p3(surface.evaluate(f, 0.25, 0.25).position));
+      } catch(const CGAL::Subdiv::Bad_input&) {
+        const double nan = std::nan("");
+        m_points.push_back({nan, nan, nan});
+      }
+    }
+  }
+  std::vector<P3> output_points() const override { return m_points; }
+
+private:
+  const Mesh& m_input;
+  std::optional<Surface> m_surface;
+  std::vector<P3> m_points;
+};
+
+// P, du and dv at every location, the surface made once
+template <class Surface>
+class Limit_evaluation_job : public Job
+{
+public:
+  Limit_evaluation_job(const Mesh& input, const std::vector<Limit_location>& locations)
+    : m_surface(input), m_locations(locations), m_points(locations.size()), m_derivatives(2 * locations.size())
+  {}
+  void run() override
+  {
+    for(std::size_t i = 0; i < m_locations.size(); ++i) {
+      const Limit_location& at = m_locations[i];
+      const CGAL::Subdiv::Limit_sample s =
+        m_surface.evaluate(Mesh::Face_index(static_cast<Mesh::size_type>(at.face)), at.u, at.v);
+      m_points[i] = p3(s.position);
+      m_derivatives[2 * i] = {s.du.x(), s.du.y(), s.du.z()};
+      m_derivatives[2 * i + 1] = {s.dv.x(), s.dv.y(), s.dv.z()};
+    }
+  }
+  std::vector<P3> output_points() const override { return m_points; }
+
+private:
+  Surface m_surface;
+  const std::vector<Limit_location>& m_locations;
+  std::vector<P3> m_points, m_derivatives;
+};
+
+template <class Surface>
+class Tessellation_job : public Job
+{
+public:
+  Tessellation_job(const Mesh& input, int rate) : m_surface(input), m_rate(rate) {}
+  void prepare() override { m_out = Output(); }
+  void run() override
+  {
+    try {
+      CGAL::Subdiv::tessellate(m_surface, m_out, m_rate, CGAL::Subdiv::parameters::output_normals(true));
+    } catch(const CGAL::Subdiv::Bad_input&) {
+      m_out = Output();
+    }
+  }
+  std::size_t output_faces() const override { return m_out.number_of_faces(); }
+  std::vector<P3> output_points() const override
+  {
+    std::vector<P3> points;
+    points.reserve(m_out.number_of_vertices());
+    for(const Output::Vertex_index v : m_out.vertices())
+      points.push_back(p3(m_out.point(v)));
+    return points;
+  }
+
+private:
+  using Output = CGAL::Surface_mesh<CGAL::Subdiv::Limit_sample::Point>;
+  Surface m_surface;
+  int m_rate;
+  Output m_out;
+};
+
+template <class Surface>
+std::string refusals(const Mesh& mesh, const std::vector<Limit_location>& locations, std::vector<bool>& refused)
+{
+  const Surface surface(mesh);
+  std::string first;
+  refused.assign(locations.size(), false);
+  for(std::size_t i = 0; i < locations.size(); ++i) {
+    const Limit_location& at = locations[i];
+    try {
+      surface.evaluate(Mesh::Face_index(static_cast<Mesh::size_type>(at.face)), at.u, at.v);
+    } catch(const CGAL::Subdiv::Bad_input& e) {
+      refused[i] = true;
+      if(first.empty())
+        first = e.what();
+    }
+  }
+  return first;
+}
+
 } // namespace
+
+Job_ptr ours_limit_build(const Input& input, Scheme scheme)
+{
+  if(scheme == Scheme::loop)
+    return std::make_unique<Limit_build_job<Loop_limit>>(input.mesh);
+  if(scheme == Scheme::catmull_clark)
+    return std::make_unique<Limit_build_job<Cc_limit>>(input.mesh);
+  return nullptr;
+}
+
+std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                                std::vector<bool>& refused)
+{
+  if(scheme == Scheme::loop)
+    return refusals<Loop_limit>(input.mesh, locations, refused);
+  return refusals<Cc_limit>(input.mesh, locations, refused);
+}
+
+Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations)
+{
+  if(scheme == Scheme::loop)
+    return std::make_unique<Limit_evaluation_job<Loop_limit>>(input.mesh, locations);
+  if(scheme == Scheme::catmull_clark)
+    return std::make_unique<Limit_evaluation_job<Cc_limit>>(input.mesh, locations);
+  return nullptr;
+}
+
+Job_ptr ours_tessellation(const Input& input, Scheme scheme, int rate)
+{
+  if(scheme == Scheme::loop)
+    return std::make_unique<Tessellation_job<Loop_limit>>(input.mesh, rate);
+  if(scheme == Scheme::catmull_clark)
+    return std::make_unique<Tessellation_job<Cc_limit>>(input.mesh, rate);
+  return nullptr;
+}
 
 Job_ptr surface_mesh_resize_floor(const Input& input, Scheme scheme, int levels)
 {

@@ -13,6 +13,9 @@
 #include "libraries.h"
 
 #ifdef SUBDIV_BENCH_WITH_OSD
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/bfr/tessellation.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/stencilTable.h>
 #include <opensubdiv/far/stencilTableFactory.h>
@@ -21,6 +24,9 @@
 #include <opensubdiv/osd/ompEvaluator.h>
 #include <opensubdiv/version.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <thread>
 #endif
 
@@ -52,6 +58,18 @@ Apply_ptr osd_apply_omp_float(const Soup&, Scheme, int)
 {
   return nullptr;
 }
+Job_ptr osd_limit_build(const Soup&, Scheme)
+{
+  return nullptr;
+}
+Job_ptr osd_limit_evaluation(const Soup&, Scheme, const std::vector<Limit_location>&, bool)
+{
+  return nullptr;
+}
+Job_ptr osd_tessellation(const Soup&, Scheme, int)
+{
+  return nullptr;
+}
 
 #else
 
@@ -60,6 +78,7 @@ namespace {
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 namespace Osd = OpenSubdiv::Osd;
+namespace Bfr = OpenSubdiv::Bfr;
 
 // the primvar type of Far's templates
 struct Vertex
@@ -118,9 +137,15 @@ public:
       m_coarse.push_back(Vertex{{p[0], p[1], p[2]}});
   }
 
+  /// the refiner of the base mesh, not refined
+  std::unique_ptr<Far::TopologyRefiner> create() const
+  {
+    return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(m_descriptor, m_options));
+  }
+
   std::unique_ptr<Far::TopologyRefiner> refine(int levels) const
   {
-    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(m_descriptor, m_options));
+    std::unique_ptr<Far::TopologyRefiner> refiner = create();
     refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
     return refiner;
   }
@@ -317,6 +342,163 @@ private:
   int m_threads = 1;
 };
 
+// --- Bfr: the limit surface ---------------------------------------------------------
+
+P3 nan_point()
+{
+  const double nan = std::nan("");
+  return {nan, nan, nan};
+}
+
+class Bfr_build_job : public Job
+{
+public:
+  Bfr_build_job(const Soup& soup, Scheme scheme) : m_topology(soup, scheme) {}
+  void prepare() override
+  {
+    m_factory.reset();
+    m_refiner.reset();
+  }
+  void run() override
+  {
+    m_refiner = m_topology.create();
+    m_factory = std::make_unique<Bfr::RefinerSurfaceFactory<>>(*m_refiner);
+  }
+
+private:
+  Topology m_topology;
+  std::unique_ptr<Far::TopologyRefiner> m_refiner;
+  std::unique_ptr<Bfr::RefinerSurfaceFactory<>> m_factory;
+};
+
+// the refiner and Bfr's factory of a soup, made outside the timers, and the
+// surface of one face at a time with its patch points
+class Bfr_mesh
+{
+public:
+  Bfr_mesh(const Soup& soup, Scheme scheme)
+    : m_topology(soup, scheme), m_refiner(m_topology.create()), m_factory(*m_refiner)
+  {
+    m_mesh_points.reserve(3 * soup.points.size());
+    for(const P3& p : soup.points)
+      m_mesh_points.insert(m_mesh_points.end(), p.begin(), p.end());
+  }
+  /// the surface of face `face`, its patch points ready; false if Bfr has none
+  bool init(int face)
+  {
+    if(!m_factory.InitVertexSurface(face, &m_surface))
+      return false;
+    m_patch_points.resize(3 * static_cast<std::size_t>(m_surface.GetNumPatchPoints()));
+    m_surface.PreparePatchPoints(m_mesh_points.data(), 3, m_patch_points.data(), 3);
+    return true;
+  }
+  const Bfr::Surface<double>& surface() const { return m_surface; }
+  void evaluate(const double uv[2], double* p, double* du, double* dv) const
+  {
+    m_surface.Evaluate(uv, m_patch_points.data(), 3, p, du, dv);
+  }
+
+private:
+  Topology m_topology;
+  std::unique_ptr<Far::TopologyRefiner> m_refiner;
+  Bfr::RefinerSurfaceFactory<> m_factory;
+  std::vector<double> m_mesh_points, m_patch_points;
+  Bfr::Surface<double> m_surface;
+};
+
+class Bfr_evaluation_job : public Job
+{
+public:
+  Bfr_evaluation_job(const Soup& soup, Scheme scheme, const std::vector<Limit_location>& locations, bool per_face)
+    : m_mesh(soup, scheme), m_locations(locations), m_order(locations.size()), m_per_face(per_face),
+      m_points(locations.size(), nan_point()), m_derivatives(2 * locations.size())
+  {
+    std::iota(m_order.begin(), m_order.end(), std::size_t(0));
+    if(per_face)
+      std::stable_sort(m_order.begin(), m_order.end(),
+                       [&](std::size_t a, std::size_t b) { return locations[a].face < locations[b].face; });
+  }
+  void run() override
+  {
+    int face = -1;
+    bool valid = false;
+    for(const std::size_t i : m_order) {
+      const Limit_location& at = m_locations[i];
+      if(!m_per_face || at.face != face) {
+        face = at.face;
+        valid = m_mesh.init(face);
+      }
+      if(!valid) // no surface: the point stays NaN, so that the comparison shows it
+        continue;
+      const double uv[2] = {at.u, at.v};
+      m_mesh.evaluate(uv, m_points[i].data(), m_derivatives[2 * i].data(), m_derivatives[2 * i + 1].data());
+    }
+  }
+  std::vector<P3> output_points() const override { return m_points; }
+
+private:
+  Bfr_mesh m_mesh;
+  const std::vector<Limit_location>& m_locations;
+  std::vector<std::size_t> m_order; // the locations by face (per face), or as given
+  bool m_per_face;
+  std::vector<P3> m_points, m_derivatives;
+};
+
+class Bfr_tessellation_job : public Job
+{
+public:
+  Bfr_tessellation_job(const Soup& soup, Scheme scheme, int rate)
+    : m_mesh(soup, scheme), m_faces(static_cast<int>(soup.face_sizes.size())), m_rate(rate)
+  {
+    if(scheme == Scheme::catmull_clark)
+      m_options.PreserveQuads(true).SetFacetSize(4);
+  }
+  void prepare() override
+  {
+    m_points = std::vector<P3>();
+    m_normals = std::vector<P3>();
+    m_facets = std::vector<int>();
+  }
+  void run() override
+  {
+    const int facet_size = m_options.GetFacetSize();
+    for(int f = 0; f < m_faces; ++f) {
+      if(!m_mesh.init(f))
+        continue;
+      const Bfr::Tessellation tessellation(m_mesh.surface().GetParameterization(), m_rate, m_options);
+      const std::size_t n = static_cast<std::size_t>(tessellation.GetNumCoords());
+      m_coords.resize(2 * n);
+      tessellation.GetCoords(m_coords.data());
+      // the facets index this face's points, from the first one of the face on
+      const std::size_t first_facet = m_facets.size();
+      m_facets.resize(first_facet + static_cast<std::size_t>(facet_size * tessellation.GetNumFacets()));
+      tessellation.GetFacets(m_facets.data() + first_facet);
+      for(std::size_t i = 0; i < n; ++i) {
+        P3 p, du, dv;
+        m_mesh.evaluate(&m_coords[2 * i], p.data(), du.data(), dv.data());
+        const P3 normal = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        const double scale = length > 0 ? 1 / length : 0;
+        m_points.push_back(p);
+        m_normals.push_back({normal[0] * scale, normal[1] * scale, normal[2] * scale});
+      }
+    }
+  }
+  std::size_t output_faces() const override
+  {
+    return m_facets.size() / static_cast<std::size_t>(m_options.GetFacetSize());
+  }
+  std::vector<P3> output_points() const override { return m_points; }
+
+private:
+  Bfr_mesh m_mesh;
+  int m_faces, m_rate;
+  Bfr::Tessellation::Options m_options;
+  std::vector<double> m_coords;
+  std::vector<P3> m_points, m_normals;
+  std::vector<int> m_facets;
+};
+
 bool has_scheme(Scheme scheme)
 {
   return scheme == Scheme::loop || scheme == Scheme::catmull_clark;
@@ -363,6 +545,22 @@ Apply_ptr osd_apply(const Soup& input, Scheme scheme, int levels)
 Apply_ptr osd_apply_omp_float(const Soup& input, Scheme scheme, int levels)
 {
   return fits(input, scheme) ? std::make_unique<Apply_omp_job>(input, scheme, levels) : nullptr;
+}
+
+Job_ptr osd_limit_build(const Soup& input, Scheme scheme)
+{
+  return fits(input, scheme) ? std::make_unique<Bfr_build_job>(input, scheme) : nullptr;
+}
+
+Job_ptr osd_limit_evaluation(const Soup& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                             bool per_face)
+{
+  return fits(input, scheme) ? std::make_unique<Bfr_evaluation_job>(input, scheme, locations, per_face) : nullptr;
+}
+
+Job_ptr osd_tessellation(const Soup& input, Scheme scheme, int rate)
+{
+  return fits(input, scheme) ? std::make_unique<Bfr_tessellation_job>(input, scheme, rate) : nullptr;
 }
 
 #endif

@@ -40,6 +40,15 @@ std::string fixed(double x, int decimals)
   return text;
 }
 
+std::string scientific(double x)
+{
+  if(!std::isfinite(x))
+    return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1e", x);
+  return text;
+}
+
 namespace {
 
 std::string escape(const std::string& text)

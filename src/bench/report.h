@@ -14,6 +14,8 @@ namespace subdiv_bench {
 std::string seconds(double s);
 /// "%.2f" of x; "-" if not finite
 std::string fixed(double x, int decimals = 2);
+/// "%.1e" of x ("3.2e-16"); "-" if not finite
+std::string scientific(double x);
 
 struct Chart_group
 {
