@@ -18,6 +18,7 @@
 #include <cstring>
 #include <list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace S = CGAL::Subdiv;
@@ -157,6 +158,29 @@ TEST(Stencil_table, applies_to_any_range_and_through_property_maps)
               table.apply(vertices(coarse), height, vertices(coarse), fine_height);
             }).find("output keys"),
             std::string::npos);
+}
+
+// a row without terms (a limit derivative at an extraordinary vertex) is
+// zero through every way of applying a table
+TEST(Stencil_table, a_row_without_terms_is_zero)
+{
+  S::Stencil_table<FT> table(2);
+  table.add_stencil(std::vector<std::pair<std::size_t, FT>>{{1, FT(1) / FT(2)}});
+  table.add_stencil(std::vector<std::pair<std::size_t, FT>>{});
+  const std::vector<KE::Point_3> points{{1, 2, 3}, {4, 6, 8}};
+  EXPECT_EQ(table.evaluate(points, 0), KE::Point_3(2, 3, 4));
+  EXPECT_EQ(table.evaluate(points, 1), CGAL::ORIGIN);
+  EXPECT_EQ(table.evaluate(std::vector<FT>{FT(5), FT(7)}, 1), FT(0));
+  std::vector<KE::Point_3> out(2);
+  table.apply(points, out);
+  EXPECT_EQ(out[1], CGAL::ORIGIN);
+  S::Stencil_table<double> doubles(2);
+  doubles.add_stencil(std::vector<std::pair<std::size_t, double>>{});
+  const std::vector<CGAL::Simple_cartesian<double>::Point_3> double_points{{1, 2, 3}, {4, 6, 8}};
+  std::vector<CGAL::Simple_cartesian<double>::Point_3> double_out(1, {9, 9, 9});
+  doubles.apply(double_points, double_out);
+  EXPECT_EQ(double_out[0], CGAL::ORIGIN);
+  EXPECT_EQ(doubles.evaluate(double_points, 0), CGAL::ORIGIN);
 }
 
 TEST(Stencil_table, every_host_composes_exactly_what_subdivide_makes)

@@ -14,6 +14,7 @@
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
 #include <CGAL/Subdiv/limit/Stam_eigenbasis.h>
+#include <CGAL/Subdiv/limit/local_patch.h>
 #include <CGAL/Subdiv/limit/patch_basis.h>
 #include <CGAL/Subdiv/limit/patch_points.h>
 #include <CGAL/Subdiv/limit/project_to_limit.h>
@@ -33,6 +34,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -172,12 +175,17 @@ public:
   /// whether a patch with one extraordinary corner is evaluated with Stam's eigenbasis (floating-point
   /// kernels only; exact kernels always refine): `false` refines it, for comparisons
   bool eigenbasis = true;
+  /// faces whose refined neighbourhoods (down to the patches that evaluations reached) are kept, so that
+  /// the next evaluation on them refines nothing; the oldest face is dropped first. 0 keeps none.
+  std::size_t cached_faces = 4096;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
   /// border (not supported yet) or a face that is not a triangle
   explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
-    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>()), m_eigenbases(std::make_shared<Eigenbases>(m_mask))
+    : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>()),
+      m_numbering(std::make_shared<const internal::Mesh_numbering<PolygonMesh>>(mesh)),
+      m_eigenbases(std::make_shared<Eigenbases>(m_mask)), m_cache(std::make_shared<Cache>())
   {
     if constexpr(!quads) {
       for(const halfedge_descriptor h : halfedges(mesh))
@@ -185,7 +193,7 @@ public:
           internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
                                                << ordinal_of(target(h, mesh)) << "): not supported yet for Loop");
       for(const face_descriptor f : faces(mesh))
-        if(degree_of(f) != 3)
+        if(corners_of(f) != 3)
           internal::refuse(internal::Message()
                            << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
     }
@@ -206,14 +214,18 @@ public:
   /// the mesh whose limit this is
   const PolygonMesh& mesh() const { return *m_mesh; }
 
+  /// the number of corners of face `f`: a Catmull-Clark face with n != 4 is addressed as n sub-quads
+  int corners_of(face_descriptor f) const
+  {
+    return static_cast<int>(CGAL::halfedges_around_face(halfedge(f, *m_mesh), *m_mesh).size());
+  }
+
   /// the limit surface at (u, v) of quad (Catmull-Clark) or triangle (Loop) `f`; \throws Bad_input
   /// if `f` is a Catmull-Clark face with n != 4 corners, or (u, v) is not in its domain
   Limit_sample evaluate(face_descriptor f, double u, double v) const
   {
     check_location({f, -1, u, v});
-    if(std::optional<Exact_sample> s = evaluate_directly(*m_mesh, halfedge(f, *m_mesh), FT(u), FT(v), 0))
-      return to_sample(*s);
-    return to_sample(evaluate_face(local_patch(*m_mesh, f), FT(u), FT(v), 0));
+    return to_sample(evaluate_kept({f, -1, u, v}));
   }
 
   /// the limit surface at (u, v) of the sub-quad at `corner` of face `f` (n != 4 corners)
@@ -223,7 +235,7 @@ public:
     if(corner < 0)
       internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner);
     check_location({f, corner, u, v});
-    return to_sample(evaluate_patch(local_patch(*m_mesh, f), corner, FT(u), FT(v)));
+    return to_sample(evaluate_kept({f, corner, u, v}));
   }
 
   /// a parameter: (face, u, v), or (face, corner, u, v) for a Catmull-Clark sub-quad (corner -1: none)
@@ -260,7 +272,7 @@ public:
     std::array<std::vector<std::pair<std::size_t, FT>>, 6> rows;
     for(const Location& at : locations) {
       std::vector<vertex_descriptor> patch_sources;
-      const Patch patch = local_patch(*m_mesh, halfedge(at.face, *m_mesh), &patch_sources);
+      const Patch patch = internal::local_patch<Point>(*m_mesh, halfedge(at.face, *m_mesh), &patch_sources);
       for(auto& row : rows)
         row.clear();
       for(std::size_t first = 0; first < patch_sources.size(); first += 3) {
@@ -270,7 +282,9 @@ public:
           unit.mesh.point(typename Patch_mesh::Vertex_index(static_cast<std::uint32_t>(j))) =
             Point(coordinate(0), coordinate(1), coordinate(2));
         }
-        const Exact_sample s = evaluate_patch(std::move(unit), at.corner, FT(at.u), FT(at.v));
+        // a tree of its own, not kept: its points are not the mesh's
+        const std::unique_ptr<Node> root = make_node(unit.mesh, unit.h0);
+        const Exact_sample s = evaluate_leaf(descend(*root, at));
         const std::array<Vector, 6> values = {s.position - CGAL::ORIGIN, s.du, s.dv, s.duu, s.duv, s.dvv};
         for(std::size_t d = 0; d < 3 && first + d < patch_sources.size(); ++d)
           for(std::size_t q = 0; q < 6; ++q)
@@ -278,23 +292,15 @@ public:
               rows[q].emplace_back(number(patch_sources[first + d]), values[q][int(d)]);
       }
       const auto all = tables.all();
-      for(std::size_t q = 0; q < 6; ++q) {
-        if(rows[q].empty()) // a table's rows have a term (a derivative at an extraordinary vertex: zero)
-          rows[q].emplace_back(number(patch_sources[0]), FT(0));
-        all[q]->add_stencil(rows[q]);
-      }
+      for(std::size_t q = 0; q < 6; ++q)
+        all[q]->add_stencil(rows[q]); // (a derivative at an extraordinary vertex: no terms, zero)
     }
     return tables;
   }
 
 private:
   using Eigenbasis = internal::Stam_eigenbasis<quads ? 16 : 12>;
-  // a face of a small mesh, with the halfedge whose target is its corner 0
-  struct Patch
-  {
-    Patch_mesh mesh;
-    Patch_halfedge h0;
-  };
+  using Patch = internal::Local_patch<Point>;
   // the position and derivatives, in the mesh's number type
   struct Exact_sample
   {
@@ -303,16 +309,10 @@ private:
     bool at_extraordinary_vertex = false;
     Vector normal; // at an extraordinary vertex only
   };
-  struct Child
-  {
-    Patch_mesh mesh;
-    Patch_halfedge face_h0;
-  };
-
   template <class Element>
   std::size_t ordinal_of(Element e) const
   {
-    return internal::Mesh_numbering<PolygonMesh>(*m_mesh)(e);
+    return (*m_numbering)(e);
   }
 
   // refuses a location outside its face's domain, or addressed with a wrong corner
@@ -331,7 +331,7 @@ private:
                                              << std::to_string(v) << ") is not in the triangle's domain (u + v <= 1)");
       return;
     }
-    const int corners = degree_of(f);
+    const int corners = corners_of(f);
     if(corner < 0 && corners != 4)
       internal::refuse(internal::Message()
                        << "Limit_surface: face " << ordinal_of(f) << " has " << corners << " corners: address it as "
@@ -342,132 +342,6 @@ private:
     if(corner >= corners)
       internal::refuse(internal::Message() << "Limit_surface: face " << ordinal_of(f) << " has no corner " << corner
                                            << " (it has " << corners << ")");
-  }
-
-  // the limit at (u, v) of the patch's face, or of its sub-quad at `corner` (>= 0)
-  Exact_sample evaluate_patch(Patch patch, int corner, const FT& u, const FT& v) const
-  {
-    if(corner < 0)
-      return evaluate_face(std::move(patch), u, v, 0);
-    // one level makes the sub-quad a quad of its own, with the same (u, v)
-    const Child child = refine_and_find(patch, {corner, {0, 0}, {0, 0}});
-    return evaluate_face(local_patch(child.mesh, child.face_h0), u, v, 1);
-  }
-
-  int degree_of(face_descriptor f) const
-  {
-    return static_cast<int>(CGAL::halfedges_around_face(halfedge(f, *m_mesh), *m_mesh).size());
-  }
-
-  /*
-   * The fan of every (vertex, face) of faces given by their vertices: two
-   * faces at a vertex are in one fan if a chain of faces at it joins them,
-   * each sharing an edge at the vertex with the next. A vertex of a face's
-   * 1-ring that two corners reach through faces that share no edge there
-   * (a pinch) is in two fans, and the patch gets a copy of it for each, so
-   * that the patch is a disk: the refinement of the face's neighbourhood
-   * reads no connectivity at such a vertex, only its point.
-   */
-  template <class Vertex>
-  static std::map<std::pair<Vertex, std::size_t>, std::size_t> fans_of(
-    const std::vector<std::vector<Vertex>>& face_vertices)
-  {
-    struct Use
-    {
-      std::size_t face;
-      Vertex previous, next;
-    };
-    std::map<Vertex, std::vector<Use>> uses;
-    for(std::size_t a = 0; a < face_vertices.size(); ++a) {
-      const auto& vs = face_vertices[a];
-      for(std::size_t k = 0; k < vs.size(); ++k)
-        uses[vs[k]].push_back({a, vs[(k + vs.size() - 1) % vs.size()], vs[(k + 1) % vs.size()]});
-    }
-    std::map<std::pair<Vertex, std::size_t>, std::size_t> fans;
-    for(const auto& [w, at_w] : uses) {
-      std::vector<std::size_t> fan(at_w.size());
-      for(std::size_t i = 0; i < fan.size(); ++i)
-        fan[i] = i;
-      // joins fans until no two faces that share an edge at w are in different ones
-      for(bool joined = true; joined;) {
-        joined = false;
-        for(std::size_t i = 0; i < at_w.size(); ++i)
-          for(std::size_t j = 0; j < at_w.size(); ++j)
-            if(fan[i] != fan[j] && (at_w[i].next == at_w[j].previous || at_w[i].previous == at_w[j].next)) {
-              const std::size_t from = std::max(fan[i], fan[j]), to = std::min(fan[i], fan[j]);
-              for(std::size_t& k : fan)
-                if(k == from)
-                  k = to;
-              joined = true;
-            }
-      }
-      for(std::size_t i = 0; i < at_w.size(); ++i)
-        fans[{w, at_w[i].face}] = fan[i];
-    }
-    return fans;
-  }
-
-  /*
-   * The patch of face f of `source` (a copy of f and of every face that
-   * shares a vertex with it, f first), its corner 0 at the target of
-   * halfedge(f, source). Outside f's corners the patch has a border of its
-   * own: the elements that a refinement makes there are never read.
-   */
-  template <class Source>
-  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::face_descriptor f)
-  {
-    return local_patch(mesh, halfedge(f, mesh));
-  }
-
-  // (`sources`, if given: the vertex of `mesh` of each vertex of the patch, in order)
-  template <class Source>
-  static Patch local_patch(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0,
-                           std::vector<typename boost::graph_traits<Source>::vertex_descriptor>* sources = nullptr)
-  {
-    using Source_face = typename boost::graph_traits<Source>::face_descriptor;
-    using Source_vertex = typename boost::graph_traits<Source>::vertex_descriptor;
-    const auto vpm = get(CGAL::vertex_point, mesh);
-    const Source_face f = face(h0, mesh);
-    std::vector<Source_face> ring{f};
-    for(const auto corner : CGAL::vertices_around_face(h0, mesh))
-      for(const Source_face g : CGAL::faces_around_target(halfedge(corner, mesh), mesh))
-        if(g != boost::graph_traits<Source>::null_face() && std::find(ring.begin(), ring.end(), g) == ring.end())
-          ring.push_back(g);
-    // each ring face's vertices, and at each vertex its fan: the ring faces
-    // around it joined through the edges at it that they share
-    std::vector<std::vector<Source_vertex>> face_vertices;
-    for(const Source_face g : ring) {
-      face_vertices.emplace_back();
-      for(const Source_vertex w : CGAL::vertices_around_face(halfedge(g, mesh), mesh))
-        face_vertices.back().push_back(w);
-    }
-    const auto fans = fans_of(face_vertices);
-    Patch patch;
-    std::map<std::pair<Source_vertex, std::size_t>, typename Patch_mesh::Vertex_index> copy;
-    std::vector<typename Patch_mesh::Vertex_index> corners;
-    for(std::size_t a = 0; a < ring.size(); ++a) {
-      corners.clear();
-      for(const Source_vertex w : face_vertices[a]) {
-        auto [it, fresh] = copy.emplace(std::make_pair(w, fans.at({w, a})), typename Patch_mesh::Vertex_index());
-        if(fresh) {
-          it->second = patch.mesh.add_vertex(get(vpm, w));
-          if(sources != nullptr)
-            sources->push_back(w);
-        }
-        corners.push_back(it->second);
-      }
-      if(patch.mesh.add_face(corners) == Patch_mesh::null_face())
-        internal::refuse(internal::Message()
-                         << "Limit_surface: the faces around a face do not make a disk (a non-manifold neighbourhood)");
-    }
-    const auto copy_of = [&](Source_vertex w) { return copy.at({w, fans.at({w, 0})}); };
-    [[maybe_unused]] const auto [h, found] =
-      CGAL::halfedge(copy_of(source(h0, mesh)), copy_of(target(h0, mesh)), patch.mesh);
-    CGAL_assertion(found && patch.mesh.face(h) == typename Patch_mesh::Face_index(0));
-    patch.h0 = h;
-    // the domain of the face's children (Face_origin) starts at the target of its halfedge
-    patch.mesh.set_halfedge(patch.mesh.face(h), h);
-    return patch;
   }
 
   template <std::size_t N>
@@ -495,29 +369,6 @@ private:
       return bspline_patch_weights(u, v);
     else
       return box_spline_patch_weights(u, v);
-  }
-
-  /*
-   * The limit at (u, v) of the face of h0 in `mesh` without refining it:
-   * a regular patch from its basis, and, in a floating-point kernel, a
-   * patch with one extraordinary corner from Stam's eigenbasis (exact
-   * kernels refine instead, to stay exact); nothing otherwise.
-   */
-  template <class Source>
-  std::optional<Exact_sample> evaluate_directly(const Source& mesh,
-                                                typename boost::graph_traits<Source>::halfedge_descriptor h0,
-                                                const FT& u, const FT& v, int depth) const
-  {
-    const internal::Patch_points<Source, quads> patch(mesh, h0);
-    if(patch.is_regular(sharp_corners()))
-      return combine(patch.control_points(), basis_weights(u, v));
-    if constexpr(std::is_floating_point_v<FT>) {
-      if(!eigenbasis)
-        return std::nullopt;
-      if(const auto [corner, n] = patch.extraordinary_corner(); n > 0)
-        return evaluate_around(mesh, h0, corner, n, u, v, depth);
-    }
-    return std::nullopt;
   }
 
   // the corner of the patch's face at (u, v), if (u, v) is a corner; -1 otherwise
@@ -618,14 +469,6 @@ private:
     return Patch_halfedge();
   }
 
-  // refines the patch one level and returns the child of its face at `place`
-  Child refine_and_find(Patch& patch, const Child_place& place) const
-  {
-    const Origin_map origins = refine(patch.mesh);
-    const Patch_halfedge h = find_child(patch.mesh, origins, place);
-    return Child{std::move(patch.mesh), h};
-  }
-
   /*
    * The child of the face that holds (u, v), as the split makes it: the
    * quarter of a quad, or of a triangle a corner triangle or the middle one
@@ -722,8 +565,63 @@ private:
     const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
     std::unique_ptr<const Eigenbasis>& slot = m_eigenbases->by_valence[n];
     if(!slot)
-      slot = std::make_unique<const Eigenbasis>(build_eigenbasis(local_patch(mesh, h0)));
+      slot = std::make_unique<const Eigenbasis>(build_eigenbasis(internal::local_patch<Point>(mesh, h0)));
     return slot->usable() ? slot.get() : nullptr;
+  }
+
+  /*
+   * A patch that is evaluated without refining it: a regular patch, from
+   * its control points, or (in a floating-point kernel) a patch with one
+   * extraordinary inner corner, from the coordinates of its control points
+   * in the eigenbasis of that corner's valence (Stam). Both are computed
+   * once per patch.
+   */
+  struct Direct_patch
+  {
+    std::optional<std::array<Point, quads ? 16 : 12>> points; // regular: the control points
+    const Eigenbasis* basis = nullptr;                        // Stam: the eigenbasis
+    int corner = 0;                                           // the extraordinary corner
+    Point origin = CGAL::ORIGIN;                              // its point
+    Eigen::MatrixXd coefficients;                             // the ring's points from it, in the eigenbasis
+  };
+
+  // the direct form of the patch at h0 of `mesh`, if it has one
+  template <class Source>
+  std::optional<Direct_patch> direct_patch(const Source& mesh,
+                                           typename boost::graph_traits<Source>::halfedge_descriptor h0) const
+  {
+    const internal::Patch_points<Source, quads> patch(mesh, h0);
+    if(patch.is_regular(sharp_corners())) {
+      Direct_patch direct;
+      direct.points = patch.control_points();
+      return direct;
+    }
+    if constexpr(std::is_floating_point_v<FT>) {
+      if(!eigenbasis)
+        return std::nullopt;
+      const auto corner = patch.extraordinary_corner();
+      if(corner.valence == 0)
+        return std::nullopt;
+      const Eigenbasis* basis = eigenbasis_of(corner.valence, mesh, corner.into);
+      if(!basis)
+        return std::nullopt;
+      // the control points from the extraordinary vertex's (ring[0]): the
+      // derivative weights sum to 0 only up to rounding, times 2^level
+      const auto vpm = get(CGAL::vertex_point, mesh);
+      const Point origin = get(vpm, corner.ring[0]);
+      Eigen::MatrixXd points(static_cast<Eigen::Index>(corner.ring.size()), 3);
+      for(Eigen::Index r = 0; r < points.rows(); ++r) {
+        const Vector p = get(vpm, corner.ring[std::size_t(r)]) - origin;
+        points.row(r) << p.x(), p.y(), p.z();
+      }
+      Direct_patch direct;
+      direct.basis = basis;
+      direct.corner = corner.index;
+      direct.origin = origin;
+      direct.coefficients = basis->coefficients(points);
+      return direct;
+    }
+    return std::nullopt;
   }
 
   /*
@@ -736,6 +634,25 @@ private:
   {
     std::array<std::array<int, 2>, 2> L;
     std::array<int, 2> o;
+
+    std::pair<FT, FT> operator()(const FT& u, const FT& v) const
+    {
+      return {FT(L[0][0]) * u + FT(L[0][1]) * v + FT(o[0]), FT(L[1][0]) * u + FT(L[1][1]) * v + FT(o[1])};
+    }
+    // the derivatives along (s, t) as derivatives along (u, v)
+    void turn_back(Exact_sample& s) const
+    {
+      const Vector ds = s.du, dt = s.dv, dss = s.duu, dst = s.duv, dtt = s.dvv;
+      const auto second = [&](int a, int b) {
+        return dss * FT(L[0][a] * L[0][b]) + dst * FT(L[0][a] * L[1][b] + L[1][a] * L[0][b]) +
+               dtt * FT(L[1][a] * L[1][b]);
+      };
+      s.du = ds * FT(L[0][0]) + dt * FT(L[1][0]);
+      s.dv = ds * FT(L[0][1]) + dt * FT(L[1][1]);
+      s.duu = second(0, 0);
+      s.duv = second(0, 1);
+      s.dvv = second(1, 1);
+    }
   };
   static Turn turn_to_corner(int i)
   {
@@ -752,98 +669,231 @@ private:
     }
   }
 
-  // Stam's evaluation of the patch at h0 seen from its extraordinary corner `corner`, of valence n
-  template <class Source>
-  std::optional<Exact_sample> evaluate_around(const Source& mesh,
-                                              typename boost::graph_traits<Source>::halfedge_descriptor h0, int corner,
-                                              std::size_t n, const FT& u, const FT& v, int depth) const
+  // the levels from the extraordinary corner (s, t) of a Stam patch lies at: -1 at the corner itself
+  static int levels_to_regular_child(FT s, FT t)
   {
-    for(int k = 0; k < corner; ++k)
-      h0 = next(h0, mesh);
-    const Turn turn = turn_to_corner(corner);
-    const auto& L = turn.L;
-    std::optional<Exact_sample> s =
-      evaluate_with_eigenbasis(mesh, h0, n, FT(L[0][0]) * u + FT(L[0][1]) * v + FT(turn.o[0]),
-                               FT(L[1][0]) * u + FT(L[1][1]) * v + FT(turn.o[1]), depth);
-    if(!s || corner == 0)
-      return s;
-    const Vector ds = s->du, dt = s->dv, dss = s->duu, dst = s->duv, dtt = s->dvv;
-    const auto second = [&](int a, int b) {
-      return dss * FT(L[0][a] * L[0][b]) + dst * FT(L[0][a] * L[1][b] + L[1][a] * L[0][b]) +
-             dtt * FT(L[1][a] * L[1][b]);
-    };
-    s->du = ds * FT(L[0][0]) + dt * FT(L[1][0]);
-    s->dv = ds * FT(L[0][1]) + dt * FT(L[1][1]);
-    s->duu = second(0, 0);
-    s->duv = second(0, 1);
-    s->dvv = second(1, 1);
-    return s;
+    if(s == FT(0) && t == FT(0))
+      return -1;
+    int level = 0;
+    for(; in_corner_child(s, t); ++level, s *= FT(2), t *= FT(2)) {
+    }
+    return level;
+  }
+
+  // whether the patch gives (u, v) `depth` levels below the mesh directly (not a Stam patch's
+  // corner, nor a parameter closer to it than 2^-max_depth)
+  bool evaluates_directly(const Direct_patch& patch, const FT& u, const FT& v, int depth) const
+  {
+    if(!patch.basis)
+      return true;
+    const auto [s, t] = turn_to_corner(patch.corner)(u, v);
+    const int level = levels_to_regular_child(s, t);
+    return level >= 0 && depth + level < max_depth;
   }
 
   /*
-   * Stam's evaluation of the patch at h0 of `mesh`, whose corner 0 is its
-   * one extraordinary vertex, of valence n: (u, v) lies in a regular child
-   * of the patch `level` levels down towards the corner, and that child's
-   * control points are a combination of the eigen-coefficients of the
-   * patch's (`Stam_eigenbasis`). Nothing at the corner itself (its limit
-   * masks give it), below `max_depth`, or if the eigenbasis is not usable.
+   * The limit at (u, v) of a direct patch: a regular one from its basis; a
+   * Stam patch from its extraordinary corner, where (s, t) lies in a
+   * regular child of the patch `level` levels down towards the corner, and
+   * that child's control points are a combination of the eigen-coefficients
+   * (`Stam_eigenbasis`).
    */
-  template <class Source>
-  std::optional<Exact_sample> evaluate_with_eigenbasis(const Source& mesh,
-                                                       typename boost::graph_traits<Source>::halfedge_descriptor h0,
-                                                       std::size_t n, FT u, FT v, int depth) const
+  Exact_sample evaluate_direct(const Direct_patch& patch, const FT& u, const FT& v) const
   {
-    if(u == FT(0) && v == FT(0))
-      return std::nullopt;
-    const Eigenbasis* basis = eigenbasis_of(n, mesh, h0);
-    if(!basis)
-      return std::nullopt;
-    int level = 0;
-    for(; in_corner_child(u, v); ++level, u *= FT(2), v *= FT(2))
-      if(depth + level >= max_depth)
-        return std::nullopt;
-    const Child_parameters c = child_parameters(u, v);
-    // the control points from the extraordinary vertex's (ring[0]): the
-    // derivative weights sum to 0 only up to rounding, times 2^level
-    const auto ring = internal::Patch_points<Source, quads>(mesh, h0).ring_vertices();
-    Eigen::MatrixXd points(static_cast<Eigen::Index>(ring.size()), 3);
-    const auto vpm = get(CGAL::vertex_point, mesh);
-    const Point origin = get(vpm, ring[0]);
-    for(Eigen::Index r = 0; r < points.rows(); ++r) {
-      const Vector p = get(vpm, ring[r]) - origin;
-      points.row(r) << p.x(), p.y(), p.z();
+    if(patch.points)
+      return combine(*patch.points, basis_weights(u, v));
+    if constexpr(std::is_floating_point_v<FT>) { // (exact kernels have no Stam patches)
+      const Turn turn = turn_to_corner(patch.corner);
+      const auto [s, t] = turn(u, v);
+      const int level = levels_to_regular_child(s, t);
+      const Child_parameters c = child_parameters(std::ldexp(s, level), std::ldexp(t, level));
+      const auto values =
+        patch.basis->evaluate(patch.coefficients, regular_child_index(c.place), level, basis_weights(c.u, c.v));
+      const auto vector = [](const Eigen::RowVector3d& w, const FT& factor) {
+        return Vector(w(0), w(1), w(2)) * factor;
+      };
+      Exact_sample sample;
+      sample.position = patch.origin + vector(values[0], FT(1));
+      sample.du = vector(values[1], c.scale);
+      sample.dv = vector(values[2], c.scale);
+      sample.duu = vector(values[3], c.scale * c.scale);
+      sample.duv = vector(values[4], c.scale * c.scale);
+      sample.dvv = vector(values[5], c.scale * c.scale);
+      turn.turn_back(sample);
+      return sample;
     }
-    const auto values =
-      basis->evaluate(basis->coefficients(points), regular_child_index(c.place), level, basis_weights(c.u, c.v));
-    const auto vector = [](const Eigen::RowVector3d& w, const FT& factor) { return Vector(w(0), w(1), w(2)) * factor; };
-    Exact_sample s;
-    s.position = origin + vector(values[0], FT(1));
-    s.du = vector(values[1], c.scale);
-    s.dv = vector(values[2], c.scale);
-    s.duu = vector(values[3], c.scale * c.scale);
-    s.duv = vector(values[4], c.scale * c.scale);
-    s.dvv = vector(values[5], c.scale * c.scale);
+    return Exact_sample();
+  }
+
+  /*
+   * A face, or a child of one, on the way down to the parameters evaluated
+   * on it: a direct patch, or a local patch that is refined once (the
+   * refined mesh and the children made of it kept) and whose children are
+   * evaluated instead. So a face's neighbourhood is refined once for all
+   * the parameters on it.
+   */
+  struct Node;
+  struct Refined
+  {
+    Patch_mesh mesh;
+    Origin_map origins;
+    std::vector<std::unique_ptr<Node>> children; // by `child_slot()`
+  };
+  struct Node
+  {
+    std::optional<Direct_patch> direct;
+    // the local patch, made the first time it is needed (to refine, or for the limit masks at a
+    // corner; a direct patch rarely needs it): a copy out of the mesh it lies in, which outlives it
+    std::function<Patch()> make_patch;
+    std::optional<Patch> patch;
+    std::unique_ptr<Refined> refined;
+
+    Patch& local_patch()
+    {
+      if(!patch)
+        patch = make_patch();
+      return *patch;
+    }
+    std::array<std::optional<Exact_sample>, 4> at_corner; // the limit masks' values at its corners
+  };
+
+  // the node of the patch at h0 of `mesh`
+  template <class Source>
+  std::unique_ptr<Node> make_node(const Source& mesh,
+                                  typename boost::graph_traits<Source>::halfedge_descriptor h0) const
+  {
+    auto node = std::make_unique<Node>();
+    node->direct = direct_patch(mesh, h0);
+    node->make_patch = [&mesh, h0] { return internal::local_patch<Point>(mesh, h0); };
+    return node;
+  }
+
+  // a child's number among its siblings: a quarter of a quad 0 to 3 (by its box), a corner triangle
+  // 0 to 2 and the middle one 3, the sub-quad at corner c 4 + c
+  static std::size_t child_slot(const Child_place& place)
+  {
+    if(place.sub_quad >= 0)
+      return 4 + std::size_t(place.sub_quad);
+    if(place.anchor != place.box_min)
+      return 3;
+    return (place.box_min[0] > 0 ? 1 : 0) + (place.box_min[1] > 0 ? 2 : 0);
+  }
+
+  // the child of the node's face at `place`, refining the node's patch the first time
+  Node& child_of(Node& node, const Child_place& place) const
+  {
+    if(!node.refined) {
+      node.refined = std::make_unique<Refined>();
+      node.refined->mesh = node.local_patch().mesh;
+      node.refined->origins = refine(node.refined->mesh);
+    }
+    Refined& refined = *node.refined;
+    const std::size_t slot = child_slot(place);
+    if(refined.children.size() <= slot)
+      refined.children.resize(slot + 1);
+    std::unique_ptr<Node>& child = refined.children[slot];
+    if(!child)
+      child = make_node(refined.mesh, find_child(refined.mesh, refined.origins, place));
+    return *child;
+  }
+
+  // where the walk down to a parameter ends: a direct patch or a corner of a node, with the
+  // parameter there and the factor its derivatives are to the face's
+  struct Leaf
+  {
+    const Node* node;
+    int corner; // -1: the direct patch
+    FT u, v;
+    FT scale;
+  };
+
+  /*
+   * Walks down from `node` (`depth` levels below the mesh) to the patch
+   * that gives (u, v) directly, making the children on the way: every child
+   * away from an extraordinary vertex is regular after one level, and a
+   * parameter at distance d from the extraordinary corner is reached after
+   * about log2(1/d) levels; at a corner that is not ordinary (or below
+   * `max_depth`), the limit masks of the analysis give the corner's value.
+   */
+  Leaf descend(Node& node, FT u, FT v, int depth) const
+  {
+    FT scale(1);
+    for(Node* at = &node;; ++depth) {
+      if(at->direct && evaluates_directly(*at->direct, u, v, depth))
+        return {at, -1, u, v, scale};
+      const int corner = corner_at(u, v);
+      if((corner >= 0 && !is_ordinary_corner(at->local_patch(), corner)) || depth >= max_depth) {
+        const int i = corner >= 0 ? corner : nearest_corner(u, v);
+        if(!at->at_corner[std::size_t(i)])
+          at->at_corner[std::size_t(i)] = evaluate_at_corner(at->local_patch(), i);
+        return {at, i, u, v, scale};
+      }
+      const Child_parameters c = child_parameters(u, v);
+      at = &child_of(*at, c.place);
+      u = c.u;
+      v = c.v;
+      scale *= c.scale; // d/du = scale d/du' in the child's parameters
+    }
+  }
+
+  // the limit at the leaf, in the parameters of the face the walk started from
+  Exact_sample evaluate_leaf(const Leaf& leaf) const
+  {
+    if(leaf.corner >= 0)
+      return *leaf.node->at_corner[std::size_t(leaf.corner)];
+    Exact_sample s = evaluate_direct(*leaf.node->direct, leaf.u, leaf.v);
+    s.du = s.du * leaf.scale;
+    s.dv = s.dv * leaf.scale;
+    s.duu = s.duu * (leaf.scale * leaf.scale);
+    s.duv = s.duv * (leaf.scale * leaf.scale);
+    s.dvv = s.dvv * (leaf.scale * leaf.scale);
     return s;
   }
 
-  // the limit at (u, v) of the patch's face, `depth` levels below the mesh
-  Exact_sample evaluate_face(Patch patch, const FT& u, const FT& v, int depth) const
+  // the leaf of `at` below `root`, the node of its face: a sub-quad is the child of its face at its
+  // corner (one level makes it a quad of its own, with the same (u, v))
+  Leaf descend(Node& root, const Location& at) const
   {
-    if(std::optional<Exact_sample> s = evaluate_directly(patch.mesh, patch.h0, u, v, depth))
-      return *s;
-    const int corner = corner_at(u, v);
-    if((corner >= 0 && !is_ordinary_corner(patch, corner)) || depth >= max_depth)
-      return evaluate_at_corner(std::move(patch), corner >= 0 ? corner : nearest_corner(u, v));
-    const Child_parameters c = child_parameters(u, v);
-    const Child child = refine_and_find(patch, c.place);
-    Exact_sample s = evaluate_face(local_patch(child.mesh, child.face_h0), c.u, c.v, depth + 1);
-    // d/du = scale d/du' in the child's parameters
-    s.du = s.du * c.scale;
-    s.dv = s.dv * c.scale;
-    s.duu = s.duu * (c.scale * c.scale);
-    s.duv = s.duv * (c.scale * c.scale);
-    s.dvv = s.dvv * (c.scale * c.scale);
-    return s;
+    if(at.corner < 0)
+      return descend(root, FT(at.u), FT(at.v), 0);
+    return descend(child_of(root, {at.corner, {0, 0}, {0, 0}}), FT(at.u), FT(at.v), 1);
+  }
+
+  // the faces whose trees are kept (by ordinal; null: none), the oldest first in `order`
+  struct Cache
+  {
+    std::mutex mutex;
+    std::vector<std::shared_ptr<Node>> roots;
+    std::deque<std::size_t> order;
+  };
+
+  /*
+   * The limit at `at`, through the kept tree of its face (made the first
+   * time): the walk down, which keeps what it makes, under the cache's
+   * lock; the evaluation at the leaf outside it (a tree dropped meanwhile
+   * lives on in `root`).
+   */
+  Exact_sample evaluate_kept(const Location& at) const
+  {
+    std::shared_ptr<Node> root;
+    std::unique_lock<std::mutex> lock(m_cache->mutex);
+    const std::size_t key = ordinal_of(at.face);
+    if(cached_faces > 0 && m_cache->roots.empty())
+      m_cache->roots.resize(num_faces(*m_mesh));
+    if(cached_faces > 0 && m_cache->roots[key])
+      root = m_cache->roots[key];
+    else {
+      root = make_node(*m_mesh, halfedge(at.face, *m_mesh));
+      if(cached_faces > 0) {
+        m_cache->roots[key] = root;
+        m_cache->order.push_back(key);
+      }
+      for(; m_cache->order.size() > cached_faces; m_cache->order.pop_front())
+        m_cache->roots[m_cache->order.front()].reset();
+    }
+    const Leaf leaf = descend(*root, at);
+    lock.unlock();
+    return evaluate_leaf(leaf);
   }
 
   static int nearest_corner(const FT& u, const FT& v)
@@ -885,7 +935,9 @@ private:
 
   const PolygonMesh* m_mesh;
   Patch_mask m_mask;
+  std::shared_ptr<const internal::Mesh_numbering<PolygonMesh>> m_numbering;
   std::shared_ptr<Eigenbases> m_eigenbases;
+  std::shared_ptr<Cache> m_cache;
 };
 
 } // namespace Subdiv

@@ -85,33 +85,46 @@ public:
     return true;
   }
 
-  /*
-   * The patch's one extraordinary corner (its index from corner 0) and its
-   * valence n: the face and every face around its corners have
-   * `face_corners` corners, every corner is an inner vertex, one has another
-   * valence than the regular one and the others have the regular one, and
-   * the 1-ring has as many vertices as that shape has (2 n + 8 for a quad,
-   * n + 6 for a triangle: none is met twice); {0, 0} if there is none.
-   */
-  std::pair<int, std::size_t> extraordinary_corner() const
+  /// the one extraordinary corner of a patch: its index from corner 0, its valence and the 1-ring
+  struct Extraordinary_corner
   {
-    int index = -1, i = 0;
-    std::size_t n = 0;
+    int index = 0;
+    std::size_t valence = 0;             // 0: the patch has none
+    halfedge_descriptor into;            // the halfedge of the face into it
+    std::vector<vertex_descriptor> ring; // ring_vertices(into)
+  };
+
+  /*
+   * The patch's one extraordinary corner: the face and every face around
+   * its corners have `face_corners` corners, every corner is an inner
+   * vertex, one has another valence than the regular one and the others
+   * have the regular one, and the 1-ring has as many vertices as that shape
+   * has (2 n + 8 for a quad, n + 6 for a triangle: none is met twice); a
+   * valence of 0 if there is none.
+   */
+  Extraordinary_corner extraordinary_corner() const
+  {
+    Extraordinary_corner found;
+    int i = 0;
     for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
       const vertex_descriptor corner = target(h, m);
       if(is_border(corner) || !faces_around_are_regular(h))
-        return {0, 0};
+        return {};
       if(const std::size_t k = valence(corner); k != regular_valence) {
-        if(index >= 0)
-          return {0, 0};
-        index = i;
-        n = k;
+        if(found.valence > 0)
+          return {};
+        found.index = i;
+        found.valence = k;
+        found.into = h;
       }
       ++i;
     }
-    if(index < 0 || ring_vertices().size() != (Quads ? 2 * n + 8 : n + 6))
-      return {0, 0};
-    return {index, n};
+    if(found.valence == 0)
+      return {};
+    found.ring = ring_vertices(found.into);
+    if(found.ring.size() != (Quads ? 2 * found.valence + 8 : found.valence + 6))
+      return {};
+    return found;
   }
 
   /*
@@ -120,12 +133,13 @@ public:
    * from corner 0, the faces around the corner from the face on (turning
    * from the halfedge into the corner g to opposite(next(g))), and in each
    * face its vertices from that corner on. Empty if a corner is on the
-   * border.
+   * border. (From the corner at the target of `start`, if given, instead.)
    */
-  std::vector<vertex_descriptor> ring_vertices() const
+  std::vector<vertex_descriptor> ring_vertices() const { return ring_vertices(h0); }
+  std::vector<vertex_descriptor> ring_vertices(halfedge_descriptor start) const
   {
     std::vector<vertex_descriptor> ring;
-    halfedge_descriptor into = h0;
+    halfedge_descriptor into = start;
     do {
       halfedge_descriptor g = into;
       do {
@@ -137,7 +151,7 @@ public:
         g = opposite(next(g, m), m);
       } while(g != into);
       into = next(into, m);
-    } while(into != h0);
+    } while(into != start);
     return ring;
   }
 

@@ -68,7 +68,7 @@ public:
                          << ", not >= 1");
       if(catmull_clark && rate % 2 == 1)
         for(const halfedge_descriptor h : {halfedge(e, m_mesh), opposite(halfedge(e, m_mesh), m_mesh)})
-          if(!is_border(h, m_mesh) && degree(face(h, m_mesh)) != 4) {
+          if(!is_border(h, m_mesh) && m_surface.corners_of(face(h, m_mesh)) != 4) {
             ++rate;
             break;
           }
@@ -77,7 +77,7 @@ public:
     // before allocating: every domain's grid, its ring and its sides at most
     double points = 0;
     for(const face_descriptor f : faces(m_mesh)) {
-      const int n = degree(f);
+      const int n = m_surface.corners_of(f);
       double largest = 0;
       for(const halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
         largest = std::max(largest, static_cast<double>(m_rates.at(edge(h, m_mesh))));
@@ -99,7 +99,7 @@ public:
     m_out = &out;
     m_normals = normals;
     for(const face_descriptor f : faces(m_mesh)) {
-      const int n = degree(f);
+      const int n = m_surface.corners_of(f);
       std::vector<halfedge_descriptor> h; // h[i]: the halfedge into corner i
       for(const halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
         h.push_back(g);
@@ -138,11 +138,6 @@ private:
     bool triangle;
     std::vector<std::vector<Out_vertex>> sides;
   };
-
-  int degree(face_descriptor f) const
-  {
-    return static_cast<int>(CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh).size());
-  }
 
   int rate_of(halfedge_descriptor h) const { return static_cast<int>(m_rates.at(edge(h, m_mesh))); }
 

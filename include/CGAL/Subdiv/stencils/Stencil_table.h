@@ -264,6 +264,8 @@ public:
     const auto in = internal::begin_of(sources);
     using Value = std::decay_t<decltype(in[0])>;
     const std::size_t begin = stencil_begin(i), end = stencil_end(i);
+    if(begin == end) // a row of no terms: zero, as in apply()
+      return zero_of<Value>();
     if constexpr(internal::Is_point<Value>::value && internal::Is_double_point_3<Value>::value &&
                  std::is_same<FT, double>::value) {
       // three doubles: the operations of the vector sum below, without the kernel's objects
@@ -298,6 +300,20 @@ public:
 
 private:
   friend struct internal::Stencil_table_access;
+
+  // the value of a stencil without terms: the origin, the null vector or zero
+  template <class Value>
+  static Value zero_of()
+  {
+    if constexpr(internal::Is_point<Value>::value)
+      return Value(CGAL::ORIGIN);
+    else if constexpr(std::is_constructible<Value, CGAL::Null_vector>::value)
+      return Value(CGAL::NULL_VECTOR);
+    else if constexpr(std::is_arithmetic<Value>::value || std::is_same<Value, FT>::value)
+      return Value(0);
+    else
+      return Value{};
+  }
 
   // evaluates stencils [first, last) on values of `dimension` doubles, from
   // in(s) (a pointer to source s's values) to out(i)
