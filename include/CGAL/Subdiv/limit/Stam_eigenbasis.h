@@ -13,12 +13,15 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Subdiv {
@@ -38,13 +41,14 @@ namespace internal {
  * any other, with no refinement (Stam's eigenbasis functions, tabulated
  * here as the matrices P_k V rather than as polynomials).
  *
- * A is taken as diagonalisable when its eigenvalues are real and its
- * eigenvector matrix has a condition number below 1e6 (so that the
- * evaluation loses at most about 6 of the 16 digits of a double). Measured
- * at valences 3 to 16 (test/limit_surface_test.cpp): Catmull-Clark 160 to
- * 3.8e3 (valence 3), Loop 42 to 1.3e4 (valence 9); Loop at valence 3 is
- * defective (its triple eigenvalues 1/8 and 1/16), `usable()` is false
- * and the caller refines instead.
+ * A is taken as diagonalisable when its eigenvalues are real, its
+ * eigenvectors (orthonormal within each eigenspace) satisfy A V = V D to
+ * rounding and V has a condition number below 1e6 (so that the evaluation
+ * loses at most about 6 of the 16 digits of a double). Measured at
+ * valences 3 to 16 (test/limit_surface_test.cpp): Catmull-Clark 79 to 171
+ * (valence 3), Loop 17 to 34 (valence 5); Loop at valence 3 is defective
+ * (its triple eigenvalues 1/8 and 1/16), `usable()` is false and the
+ * caller refines instead.
  */
 template <std::size_t N>
 class Stam_eigenbasis
@@ -65,15 +69,20 @@ public:
     m_lambda = D.diagonal();
     if((D - Matrix(m_lambda.asDiagonal())).cwiseAbs().maxCoeff() > 1e-12 * scale)
       return;
-    const Matrix V = solver.pseudoEigenvectors();
+    const Matrix V = orthonormal_within_eigenspaces(solver.pseudoEigenvectors());
     const Eigen::JacobiSVD<Matrix> svd(V);
     const auto& sigma = svd.singularValues();
     m_condition = sigma(0) / sigma(sigma.size() - 1);
     if(!(m_condition < 1e6))
       return;
+    if((A * V - V * D).cwiseAbs().maxCoeff() > 1e-9 * A.cwiseAbs().maxCoeff())
+      return; // a defective eigenvalue: its vectors were not a basis of an eigenspace
     m_inverse_vectors = V.inverse();
     for(std::size_t k = 0; k < 3; ++k)
       m_children[k] = children[k] * V;
+    for(Eigen::Index i = 0; i < m_lambda.size(); ++i)
+      if(std::abs(m_lambda(i) - 1) < 1e-9)
+        m_constant_mode = i;
     m_usable = true;
   }
 
@@ -101,6 +110,11 @@ public:
       Eigen::RowVectorXd row = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(basis.data()) * m_children[k];
       for(Eigen::Index i = 0; i < row.size(); ++i)
         row(i) *= std::pow(factor * m_lambda(i), level);
+      // the constant mode (eigenvalue 1: a translation) has no derivative; its
+      // weight is a sum of derivative weights, zero but for rounding, which the
+      // factor 2^level or 4^level would blow up near the corner
+      if(factor != 1 && m_constant_mode >= 0)
+        row(m_constant_mode) = 0;
       return Eigen::RowVector3d(row * coefficients);
     };
     return {eigen_weights(w.position, 1), eigen_weights(w.du, 2),  eigen_weights(w.dv, 2),
@@ -108,7 +122,39 @@ public:
   }
 
 private:
+  /*
+   * The eigenvectors with the same eigenvalue made an orthonormal basis of
+   * their eigenspace, and the others of unit length: any basis of an
+   * eigenspace diagonalises A, but the one the solver returns inside a
+   * repeated eigenvalue depends on rounding (the condition number of V
+   * moved 100-fold between two builds), this one only on A.
+   */
+  Matrix orthonormal_within_eigenspaces(Matrix V) const
+  {
+    const Eigen::Index K = V.cols();
+    std::vector<bool> done(std::size_t(K), false);
+    for(Eigen::Index i = 0; i < K; ++i) {
+      if(done[std::size_t(i)])
+        continue;
+      std::vector<Eigen::Index> same;
+      for(Eigen::Index j = i; j < K; ++j)
+        if(!done[std::size_t(j)] && std::abs(m_lambda(j) - m_lambda(i)) <= 1e-9 * std::max(1.0, std::abs(m_lambda(i))))
+          same.push_back(j);
+      Matrix block(V.rows(), Eigen::Index(same.size()));
+      for(std::size_t c = 0; c < same.size(); ++c)
+        block.col(Eigen::Index(c)) = V.col(same[c]);
+      const Eigen::HouseholderQR<Matrix> qr(block);
+      const Matrix Q = qr.householderQ() * Matrix::Identity(V.rows(), block.cols());
+      for(std::size_t c = 0; c < same.size(); ++c) {
+        V.col(same[c]) = Q.col(Eigen::Index(c));
+        done[std::size_t(same[c])] = true;
+      }
+    }
+    return V;
+  }
+
   bool m_usable = false;
+  Eigen::Index m_constant_mode = -1; // the eigenvalue 1
   double m_condition = std::numeric_limits<double>::infinity();
   Eigen::VectorXd m_lambda;
   Matrix m_inverse_vectors;
