@@ -9,6 +9,7 @@
 // test checks that it is up to date.
 #include "../cli/analyse_schemes.h"
 #include "../cli/numbers.h"
+#include "limit_tables.h"
 #include "rules.h"
 
 #include <algorithm>
@@ -789,12 +790,21 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "`surface_eigenvalues.csv`, `surface_masks.csv` (limit and tangent masks by label), "
      << "`surface_rules.csv` (every rule weight by label, with the exact fraction where rational), "
      << "`surface_sharp.csv` (one row per sharp vertex configuration), "
-     << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`.\n";
+     << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`, `limit_eigenbasis.csv`.\n\n"
+     << "The limit surface evaluator (`Limit_surface`): its Stam eigenbasis by valence, under Catmull-Clark "
+     << "and Loop, in [limit-eigenbasis.md](limit-eigenbasis.md).\n";
 }
 
 const char* const usage =
   "usage: subdiv-doc-tables OUTPUT_DIR\n"
   "writes the scheme tables (Markdown and CSV) into OUTPUT_DIR (created if missing)\n";
+
+void write_limit_tables(Output& out)
+{
+  const subdiv_doc_tables::Limit_tables limit = subdiv_doc_tables::limit_eigenbasis_tables(first_valence, last_valence);
+  out.file("limit-eigenbasis.md") << limit.markdown;
+  out.file("limit_eigenbasis.csv") << limit.csv;
+}
 
 } // namespace
 
@@ -842,6 +852,7 @@ int main(int argc, char** argv)
     std::vector<Overview_row> curves;
     write_curves(out, curves);
     write_overview(all, curves, out);
+    write_limit_tables(out);
     out.write_all();
     std::cerr << "subdiv-doc-tables: wrote " << out.names().size() << " files to " << dir.string() << "\n";
     return 0;
