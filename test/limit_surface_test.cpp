@@ -319,6 +319,54 @@ TEST(LimitSurface, diagonalisability_of_the_local_matrix_by_valence)
   }
 }
 
+namespace {
+
+// the eigenvalues of the eigenbasis (what doc/tables/limit-eigenbasis.md
+// shows), by decreasing modulus
+std::vector<double> leading_eigenvalues(const std::map<std::size_t, std::vector<double>>& by_valence, int n)
+{
+  std::vector<double> lambda = by_valence.at(static_cast<std::size_t>(n));
+  std::sort(lambda.begin(), lambda.end(), [](double a, double b) { return std::abs(a) > std::abs(b); });
+  return lambda;
+}
+
+} // namespace
+
+// K = 2n + 8 (Catmull-Clark) and n + 6 (Loop) eigenvalues, 1 the largest,
+// then the subdominant pair of the closed forms: Catmull-Clark's (Doo and
+// Sabin) and Loop's 3/8 + cos(2 pi / n) / 4; also at Loop's valence 3, where
+// the basis is not used
+TEST(LimitSurface, eigenbasis_eigenvalues_by_valence)
+{
+  const double pi = 3.14159265358979323846;
+  for(int n : {3, 5, 8}) {
+    Mesh quads = testing_utils::prism<Mesh>(n);
+    S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+    const S::Limit_surface<Mesh> cc(quads);
+    Mesh triangles = testing_utils::bipyramid<Mesh>(n);
+    S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+    const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);
+    for(const auto f : quads.faces())
+      for(const auto& [u, v] : {std::make_pair(0.01, 0.02), {0.98, 0.03}, {0.97, 0.99}, {0.02, 0.96}})
+        cc.evaluate(f, u, v);
+    for(const auto f : triangles.faces())
+      for(const auto& [u, v] : {std::make_pair(0.01, 0.02), {0.97, 0.01}, {0.02, 0.96}})
+        loop.evaluate(f, u, v);
+    const double c = std::cos(2 * pi / n);
+    const double cc_subdominant = (5 + c + std::cos(pi / n) * std::sqrt(2 * (9 + c))) / 16;
+    const std::vector<double> a = leading_eigenvalues(cc.eigenbasis_eigenvalues(), n);
+    ASSERT_EQ(a.size(), static_cast<std::size_t>(2 * n + 8)) << "Catmull-Clark, valence " << n;
+    EXPECT_NEAR(a[0], 1, 1e-12) << "Catmull-Clark, valence " << n;
+    EXPECT_NEAR(a[1], cc_subdominant, 1e-12) << "Catmull-Clark, valence " << n;
+    EXPECT_NEAR(a[2], cc_subdominant, 1e-12) << "Catmull-Clark, valence " << n;
+    const std::vector<double> b = leading_eigenvalues(loop.eigenbasis_eigenvalues(), n);
+    ASSERT_EQ(b.size(), static_cast<std::size_t>(n + 6)) << "Loop, valence " << n;
+    EXPECT_NEAR(b[0], 1, 1e-12) << "Loop, valence " << n;
+    EXPECT_NEAR(b[1], 3.0 / 8 + c / 4, 1e-9) << "Loop, valence " << n;
+    EXPECT_NEAR(b[2], 3.0 / 8 + c / 4, 1e-9) << "Loop, valence " << n;
+  }
+}
+
 // a parameter at a vertex of the local refinement that is not extraordinary
 // (the centre of a cube's face, the middle of its edge) has derivatives: the
 // refinement goes on there instead of taking the vertex's limit masks

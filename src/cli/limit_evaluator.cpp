@@ -23,6 +23,7 @@ struct Limit_evaluator::Model
   virtual ~Model() = default;
   virtual Limit_point evaluate(std::size_t face, int corner, double u, double v) const = 0;
   virtual Surface tessellate(int rate, bool triangles, bool normals) const = 0;
+  virtual std::map<std::size_t, Eigenbasis_facts> eigenbases() const = 0;
 };
 
 template <class Mask>
@@ -48,6 +49,15 @@ struct Limit_evaluator::Model_of : Limit_evaluator::Model
     return out;
   }
 
+  std::map<std::size_t, Eigenbasis_facts> eigenbases() const override
+  {
+    std::map<std::size_t, Eigenbasis_facts> facts;
+    const std::map<std::size_t, std::vector<double>> eigenvalues = surface.eigenbasis_eigenvalues();
+    for(const auto& [n, condition] : surface.eigenbasis_conditions())
+      facts[n] = Eigenbasis_facts{condition, eigenvalues.at(n)};
+    return facts;
+  }
+
   SD::Limit_surface<Surface, Mask> surface;
 };
 
@@ -69,6 +79,11 @@ Limit_point Limit_evaluator::evaluate(std::size_t face, int corner, double u, do
 Surface Limit_evaluator::tessellate(int rate, bool triangles, bool normals) const
 {
   return m_model->tessellate(rate, triangles, normals);
+}
+
+std::map<std::size_t, Eigenbasis_facts> Limit_evaluator::eigenbases() const
+{
+  return m_model->eigenbases();
 }
 
 } // namespace cgal_subdiv

@@ -12,6 +12,7 @@
 #include "surface_from_soup.h"
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,14 @@ struct Limit_point
   Double_kernel::Vector_3 du, dv, duu, duv, dvv, normal;
 };
 
+/// what the evaluator found for one valence's Stam eigenbasis
+/// (`Limit_surface::eigenbasis_conditions()`, `eigenbasis_eigenvalues()`)
+struct Eigenbasis_facts
+{
+  double condition;                ///< of the eigenvector matrix; infinite where the basis is not used
+  std::vector<double> eigenvalues; ///< in the order of the eigen-solver
+};
+
 /// The limit surface of a mesh under one scheme.
 class Limit_evaluator
 {
@@ -68,6 +77,10 @@ public:
   /// limit normals in the map "v:normal" (`normal_name`) with `normals`;
   /// \throws CGAL::Subdiv::Bad_input if the output would be too large
   Surface tessellate(int rate, bool triangles, bool normals) const;
+
+  /// the Stam eigenbases built so far (by evaluations next to an
+  /// extraordinary vertex), by valence
+  std::map<std::size_t, Eigenbasis_facts> eigenbases() const;
 
 private:
   struct Model;

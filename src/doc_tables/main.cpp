@@ -9,6 +9,7 @@
 // test checks that it is up to date.
 #include "../cli/analyse_schemes.h"
 #include "../cli/numbers.h"
+#include "limit_tables.h"
 #include "rules.h"
 
 #include <algorithm>
@@ -789,20 +790,43 @@ void write_overview(const std::vector<Scheme_tables>& all, std::vector<Overview_
      << "`surface_eigenvalues.csv`, `surface_masks.csv` (limit and tangent masks by label), "
      << "`surface_rules.csv` (every rule weight by label, with the exact fraction where rational), "
      << "`surface_sharp.csv` (one row per sharp vertex configuration), "
-     << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`.\n";
+     << "`curve_schemes.csv`, `four_point.csv`, `corner_cutting.csv`, `limit_eigenbasis.csv`.\n\n"
+     << "The limit surface evaluator (`Limit_surface`): its Stam eigenbasis by valence, under Catmull-Clark "
+     << "and Loop, in [limit-eigenbasis.md](limit-eigenbasis.md).\n";
 }
 
 const char* const usage =
-  "usage: subdiv-doc-tables OUTPUT_DIR\n"
-  "writes the scheme tables (Markdown and CSV) into OUTPUT_DIR (created if missing)\n";
+  "usage: subdiv-doc-tables OUTPUT_DIR [--figures FIGURES_DIR]\n"
+  "writes the scheme tables (Markdown and CSV) into OUTPUT_DIR and, with --figures, the figures\n"
+  "drawn from the library (the limit surface's curvature) into FIGURES_DIR (both created if missing)\n";
+
+void write_limit_tables(Output& out)
+{
+  const subdiv_doc_tables::Limit_tables limit = subdiv_doc_tables::limit_eigenbasis_tables(first_valence, last_valence);
+  out.file("limit-eigenbasis.md") << limit.markdown;
+  out.file("limit_eigenbasis.csv") << limit.csv;
+}
+
+void write_figures(const fs::path& dir)
+{
+  fs::create_directories(dir);
+  const fs::path path = dir / subdiv_doc_tables::curvature_figure_name;
+  std::ofstream out(path, std::ios::binary);
+  out << subdiv_doc_tables::curvature_figure();
+  if(!out)
+    throw std::runtime_error("cannot write " + path.string());
+  std::cerr << "subdiv-doc-tables: wrote " << path.string() << "\n";
+}
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-  if(argc != 2 || std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help") {
-    (argc == 2 ? std::cout : std::cerr) << usage;
-    return argc == 2 ? 0 : 2;
+  const bool help = argc == 2 && (std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help");
+  const bool with_figures = argc == 4 && std::string(argv[2]) == "--figures";
+  if(help || !(argc == 2 || with_figures)) {
+    (help ? std::cout : std::cerr) << usage;
+    return help ? 0 : 2;
   }
   try {
     const fs::path dir = argv[1];
@@ -842,8 +866,11 @@ int main(int argc, char** argv)
     std::vector<Overview_row> curves;
     write_curves(out, curves);
     write_overview(all, curves, out);
+    write_limit_tables(out);
     out.write_all();
     std::cerr << "subdiv-doc-tables: wrote " << out.names().size() << " files to " << dir.string() << "\n";
+    if(with_figures)
+      write_figures(argv[3]);
     return 0;
   } catch(const std::exception& e) {
     std::cerr << "subdiv-doc-tables: error: " << e.what() << "\n";

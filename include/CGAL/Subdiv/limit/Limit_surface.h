@@ -211,6 +211,20 @@ public:
     return conditions;
   }
 
+  /// the valences whose Stam eigenbasis has been built so far, with the eigenvalues of the local
+  /// subdivision matrix as the eigenbasis has them (the diagonal of Eigen's real block-diagonal
+  /// form, in its order; also where the basis is not used; empty if the eigen-solver failed)
+  std::map<std::size_t, std::vector<double>> eigenbasis_eigenvalues() const
+  {
+    const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
+    std::map<std::size_t, std::vector<double>> eigenvalues;
+    for(const auto& [n, basis] : m_eigenbases->by_valence) {
+      const Eigen::VectorXd& lambda = basis->eigenvalues();
+      eigenvalues[n].assign(lambda.data(), lambda.data() + lambda.size());
+    }
+    return eigenvalues;
+  }
+
   /// the mesh whose limit this is
   const PolygonMesh& mesh() const { return *m_mesh; }
 
