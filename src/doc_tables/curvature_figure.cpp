@@ -47,20 +47,6 @@ constexpr double log2_range = 2;  // colours from K0 / 4 to 4 K0
 constexpr int deepest_level = 24; // the chart samples the face at 2^-L from the vertex, L = 0..deepest_level
 const std::array<const char*, 3> line_colours = {"#1b9e77", "#7570b3", "#d95f02"};
 
-/*
- * The levels the chart shows per valence. In double, Stam's second
- * derivatives at level L carry the rounding of the eigenvalue-1 term times
- * 4^L (its derivative weights sum to zero only up to rounding), while their
- * normal part scales as (4 lambda2)^L: at valence 3 (4 lambda2 = 2/3) the
- * curvature is off by 5e-4 at L = 16 and by 13% at L = 20 against the exact
- * evaluator (Exact_rational, same mesh); at valence 5 (4 lambda2 > 1) by
- * 6e-5 at L = 24.
- */
-int accurate_levels(int valence)
-{
-  return valence == 3 ? 16 : deepest_level;
-}
-
 // the height field the control points are sampled from: an elliptic
 // paraboloid, whose curvature is positive and not symmetric about the vertex
 double height(double x, double y)
@@ -308,13 +294,15 @@ void draw_legend(std::ostringstream& svg, double left)
 
 /*
  * K / K0 against the level L of the sample 2^-L from the vertex, one line
- * per valence, each up to its `accurate_levels`.
+ * per valence. (Stam's second derivatives keep their digits down there:
+ * `curvature_next_to_an_extraordinary_vertex_keeps_its_digits` pins the
+ * curvature at L = 20 to 1e-6 of the exact evaluator's.)
  */
 void draw_chart(std::ostringstream& svg, const std::vector<Panel>& panels, double K0)
 {
   double low = 0, high = 1;
   for(const Panel& p : panels)
-    for(int L = 0; L <= accurate_levels(p.valence); ++L) {
+    for(int L = 0; L <= deepest_level; ++L) {
       low = std::min(low, std::floor(p.by_level[L] / K0));
       high = std::max(high, std::ceil(p.by_level[L] / K0));
     }
@@ -336,11 +324,10 @@ void draw_chart(std::ostringstream& svg, const std::vector<Panel>& panels, doubl
   svg << "</g>\n<text x=\"" << fixed(x(deepest_level / 2.0)) << "\" y=\"" << fixed(chart_top + chart_height + 34)
       << "\" text-anchor=\"middle\" font-size=\"11\">level L: the point (3/4, 1/2) 2^-L from the vertex in its "
       << "first face</text>\n<text x=\"" << fixed(margin) << "\" y=\"" << fixed(chart_top - 12)
-      << "\" font-size=\"11\">K / K0 towards the vertex (valence 3: to L = " << accurate_levels(3)
-      << ", where double rounding starts to show in the second derivatives)</text>\n";
+      << "\" font-size=\"11\">K / K0 towards the vertex</text>\n";
   for(std::size_t i = 0; i < panels.size(); ++i) {
     const Panel& p = panels[i];
-    const int last = accurate_levels(p.valence);
+    const int last = deepest_level;
     svg << "<path fill=\"none\" stroke=\"" << line_colours[i] << "\" stroke-width=\"1.6\" d=\"M";
     for(int L = 0; L <= last; ++L)
       svg << (L == 1 ? "L" : L ? " " : "") << fixed(x(L)) << "," << fixed(y(p.by_level[L] / K0));

@@ -122,16 +122,19 @@ std::string significant(double x, int digits)
 }
 
 /*
- * The condition number of V only as the bound the evaluator checks: its
- * value depends on the basis the eigen-solver picks inside each repeated
- * eigenvalue's eigenspace, which rounding decides. Measured on the same
- * machine, g++ -O2 against -O2 -march=native: Loop valence 7 42 against
- * 5900, valence 9 13000 against 130; Catmull-Clark valence 3 3800 against
- * 630. Not even its order of magnitude is a stable table entry.
+ * The condition number of V to 2 digits: V is orthonormal within each
+ * eigenspace (Stam_eigenbasis.h), so it depends on A only. (The basis the
+ * eigen-solver picked inside a repeated eigenvalue depended on rounding:
+ * g++ -O2 against -O2 -march=native gave 42 against 5900 for Loop at
+ * valence 7 before.)
  */
 std::string condition_text(double c)
 {
-  return std::isfinite(c) ? "< 1e6" : "inf";
+  if(!std::isfinite(c))
+    return "inf";
+  char buffer[40]; // 2 significant digits, written out (170, not 1.7e+02)
+  std::snprintf(buffer, sizeof buffer, "%.0f", std::stod(significant(c, 2)));
+  return buffer;
 }
 
 // a distinct eigenvalue and how many times it occurs
@@ -242,11 +245,9 @@ void write_header(std::ostringstream& md, int first, int last)
      << "(the values of a defective cluster averaged); `lambda2/lambda1^2` above 1 makes the Gaussian curvature "
      << "grow without bound towards the vertex for generic control points, below 1 tend to zero (it scales as "
      << "(lambda2 / lambda1^2)^(2L) at level L; see the figure in doc/limit.md); `cond(V)` is the condition "
-     << "number of the eigenvector matrix (2-norm), which bounds the digits the evaluation loses: shown as the "
-     << "bound the evaluator checks (it refuses the basis at 1e6 and above), not as a value, since the value "
-     << "depends on the basis the eigen-solver picks inside each repeated eigenvalue's eigenspace and so on "
-     << "rounding (measured on one machine, g++ -O2 against -O2 -march=native: 42 against 5900 for Loop at "
-     << "valence 7; doc/limit.md gives the ranges).\n\n";
+     << "number of the eigenvector matrix (2-norm; its vectors orthonormal within each eigenspace, so that it "
+     << "depends on A only), which bounds the digits the evaluation loses (the evaluator refuses the basis at "
+     << "1e6 and above).\n\n";
 }
 
 } // namespace
