@@ -106,22 +106,35 @@ public:
   std::array<Eigen::RowVector3d, 6> evaluate(const Matrix& coefficients, std::size_t k, int level,
                                              const Patch_weights<double, N>& w) const
   {
-    const auto eigen_weights = [&](const std::array<double, N>& basis, double factor) {
+    // lambda_i^level, then times 2^level or 4^level for the derivatives (exact)
+    Eigen::ArrayXd power(m_lambda.size());
+    for(Eigen::Index i = 0; i < power.size(); ++i)
+      power(i) = integer_power(m_lambda(i), level);
+    const auto eigen_weights = [&](const std::array<double, N>& basis, int order) {
       Eigen::RowVectorXd row = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(basis.data()) * m_children[k];
-      for(Eigen::Index i = 0; i < row.size(); ++i)
-        row(i) *= std::pow(factor * m_lambda(i), level);
+      row.array() *= power.transpose() * std::ldexp(1.0, order * level);
       // the constant mode (eigenvalue 1: a translation) has no derivative; its
       // weight is a sum of derivative weights, zero but for rounding, which the
       // factor 2^level or 4^level would blow up near the corner
-      if(factor != 1 && m_constant_mode >= 0)
+      if(order > 0 && m_constant_mode >= 0)
         row(m_constant_mode) = 0;
       return Eigen::RowVector3d(row * coefficients);
     };
-    return {eigen_weights(w.position, 1), eigen_weights(w.du, 2),  eigen_weights(w.dv, 2),
-            eigen_weights(w.duu, 4),      eigen_weights(w.duv, 4), eigen_weights(w.dvv, 4)};
+    return {eigen_weights(w.position, 0), eigen_weights(w.du, 1),  eigen_weights(w.dv, 1),
+            eigen_weights(w.duu, 2),      eigen_weights(w.duv, 2), eigen_weights(w.dvv, 2)};
   }
 
 private:
+  // x^n by squaring (std::pow costs more, and n is a small level)
+  static double integer_power(double x, int n)
+  {
+    double result = 1;
+    for(; n > 0; n >>= 1, x *= x)
+      if(n & 1)
+        result *= x;
+    return result;
+  }
+
   /*
    * The eigenvectors with the same eigenvalue made an orthonormal basis of
    * their eigenspace, and the others of unit length: any basis of an

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 namespace CGAL {
 namespace Subdiv {
@@ -140,18 +141,35 @@ std::array<FT, 15> quartic_monomials(const std::array<FT, 5>& pu, const std::arr
   return m;
 }
 
+// the coefficients of `box_spline_coefficients` in FT, converted once
+template <class FT>
+const std::array<std::array<FT, 15>, 12>& box_spline_coefficients_in()
+{
+  static const std::array<std::array<FT, 15>, 12> converted = [] {
+    std::array<std::array<FT, 15>, 12> c;
+    for(std::size_t k = 0; k < c.size(); ++k)
+      for(std::size_t n = 0; n < c[k].size(); ++n)
+        c[k][n] = FT(box_spline_coefficients[k][n]);
+    return c;
+  }();
+  return converted;
+}
+
 // the weights of the derivative of order (i, j) of the box-spline patch at (u, v)
 template <class FT>
 std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std::array<FT, 5>& pv, int i, int j)
 {
   const std::array<FT, 15> m = quartic_monomials(pu, pv, i, j);
+  const auto& coefficients = box_spline_coefficients_in<FT>();
   const FT denominator(box_spline_denominator);
   std::array<FT, 12> w;
   for(std::size_t k = 0; k < w.size(); ++k) {
     FT sum(0);
     for(std::size_t n = 0; n < m.size(); ++n)
-      if(box_spline_coefficients[k][n] != 0)
-        sum += FT(box_spline_coefficients[k][n]) * m[n];
+      if constexpr(std::is_floating_point<FT>::value)
+        sum += coefficients[k][n] * m[n]; // a zero term adds nothing: no branch, the loop vectorises
+      else if(box_spline_coefficients[k][n] != 0)
+        sum += coefficients[k][n] * m[n];
     w[k] = sum / denominator;
   }
   return w;

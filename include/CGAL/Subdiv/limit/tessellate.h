@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <map>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -53,7 +52,8 @@ public:
   using Normal_map = typename Output::template Property_map<Out_vertex, Limit_sample::Vector>;
 
   Tessellator(const Limit_surface<PolygonMesh, Mask>& surface, bool triangulate)
-    : m_surface(surface), m_mesh(surface.mesh()), m_triangulate(triangulate)
+    : m_surface(surface), m_mesh(surface.mesh()), m_number(m_mesh), m_triangulate(triangulate),
+      m_rates(num_edges(m_mesh)), m_at_vertex(num_vertices(m_mesh), Output::null_vertex()), m_along(num_edges(m_mesh))
   {}
 
   /// the rate of every edge, checked (>= 1), even on the edges of a
@@ -64,15 +64,14 @@ public:
     for(const edge_descriptor e : edges(m_mesh)) {
       long long rate = static_cast<long long>(edge_rate(e));
       if(rate < 1)
-        refuse(Message() << "tessellate: the rate of edge " << Mesh_numbering<PolygonMesh>(m_mesh)(e) << " is " << rate
-                         << ", not >= 1");
+        refuse(Message() << "tessellate: the rate of edge " << m_number(e) << " is " << rate << ", not >= 1");
       if(catmull_clark && rate % 2 == 1)
         for(const halfedge_descriptor h : {halfedge(e, m_mesh), opposite(halfedge(e, m_mesh), m_mesh)})
           if(!is_border(h, m_mesh) && m_surface.corners_of(face(h, m_mesh)) != 4) {
             ++rate;
             break;
           }
-      m_rates.emplace(e, rate);
+      m_rates[m_number(e)] = rate;
     }
     // before allocating: every domain's grid, its ring and its sides at most
     double points = 0;
@@ -80,7 +79,7 @@ public:
       const int n = m_surface.corners_of(f);
       double largest = 0;
       for(const halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_mesh), m_mesh))
-        largest = std::max(largest, static_cast<double>(m_rates.at(edge(h, m_mesh))));
+        largest = std::max(largest, static_cast<double>(rate_of(h)));
       points += (n == 3 && !catmull_clark) ? (largest + 1) * (largest + 2) / 2
                 : n == 4                   ? (largest + 1) * (largest + 1)
                                            : n * (largest / 2 + 1) * (largest / 2 + 1);
@@ -89,8 +88,9 @@ public:
       refuse(Message() << "tessellate: the rates would make up to " << std::to_string(points)
                        << " output points, more than the max_output_points limit (" << std::to_string(max_points)
                        << ")");
-    for(auto& [e, rate] : m_rates)
-      m_along[e].assign(static_cast<std::size_t>(rate + 1), Output::null_vertex());
+    for(std::size_t e = 0; e < m_rates.size(); ++e)
+      m_along[e].assign(static_cast<std::size_t>(m_rates[e] + 1), Output::null_vertex());
+    m_points = static_cast<std::size_t>(points);
   }
 
   /// tessellates every face into `out`, with normals into `normals` if given
@@ -98,6 +98,10 @@ public:
   {
     m_out = &out;
     m_normals = normals;
+    // room for every point, and about as many faces (a quad's grid has fewer)
+    out.reserve(static_cast<typename Output::size_type>(m_points),
+                static_cast<typename Output::size_type>(3 * m_points),
+                static_cast<typename Output::size_type>((m_triangulate || !catmull_clark ? 2 : 1) * m_points));
     for(const face_descriptor f : faces(m_mesh)) {
       const int n = m_surface.corners_of(f);
       std::vector<halfedge_descriptor> h; // h[i]: the halfedge into corner i
@@ -139,7 +143,7 @@ private:
     std::vector<std::vector<Out_vertex>> sides;
   };
 
-  int rate_of(halfedge_descriptor h) const { return static_cast<int>(m_rates.at(edge(h, m_mesh))); }
+  int rate_of(halfedge_descriptor h) const { return static_cast<int>(m_rates[m_number(edge(h, m_mesh))]); }
 
   // a new output point: the limit at (i / m, j / l) of the domain (integers, so that the
   // parameter is the same double from every side)
@@ -181,12 +185,13 @@ private:
   {
     const int r = rate_of(h);
     if(i == 0)
-      return m_at_vertex[source(h, m_mesh)];
+      return m_at_vertex[m_number(source(h, m_mesh))];
     if(i == r)
-      return m_at_vertex[target(h, m_mesh)];
-    // the key from edges(mesh): halfedge() of an edge made from h may give h back (Surface_mesh)
-    auto& [e, points] = *m_along.find(edge(h, m_mesh));
-    return points[static_cast<std::size_t>(halfedge(e, m_mesh) == h ? i : r - i)];
+      return m_at_vertex[m_number(target(h, m_mesh))];
+    // the points run from the source of the edge's halfedge of even ordinal (the one `edges()` gives;
+    // halfedge(edge(h)) may give h back: Surface_mesh)
+    const std::size_t e = m_number(edge(h, m_mesh));
+    return m_along[e][static_cast<std::size_t>(m_number(h) == 2 * e ? i : r - i)];
   }
 
   // side `side` of the domain: points first .. first + p along halfedge h
@@ -218,7 +223,7 @@ private:
 
   void add_face(std::initializer_list<Out_vertex> corners)
   {
-    if(m_out->add_face(std::vector<Out_vertex>(corners)) == Output::null_face())
+    if(m_out->add_face(corners) == Output::null_face())
       refuse(Message() << "tessellate: an output face could not be added (a non-manifold input?)");
   }
 
@@ -347,11 +352,13 @@ private:
 
   const Limit_surface<PolygonMesh, Mask>& m_surface;
   const PolygonMesh& m_mesh;
+  Mesh_numbering<PolygonMesh> m_number;
   bool m_triangulate;
-  std::map<edge_descriptor, long long> m_rates;
-  std::map<vertex_descriptor, Out_vertex> m_at_vertex;
-  // the points along every edge, from source(halfedge(e))
-  std::map<edge_descriptor, std::vector<Out_vertex>> m_along;
+  // by ordinal: every edge's rate, every vertex's point, the points along every edge (`edge_slot()`)
+  std::vector<long long> m_rates;
+  std::vector<Out_vertex> m_at_vertex;
+  std::vector<std::vector<Out_vertex>> m_along;
+  std::size_t m_points = 0; // at most
   Output* m_out = nullptr;
   Normal_map* m_normals = nullptr;
 };
