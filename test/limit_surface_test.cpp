@@ -39,6 +39,23 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
 namespace {
 
+// a prism over an n-gon and a bipyramid over one, refined once by Catmull-Clark
+// and Loop: every face a quad (triangle), vertices of valence n and the regular one
+template <class M = Mesh>
+M refined_prism(int n)
+{
+  M quads = testing_utils::prism<M>(n);
+  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+  return quads;
+}
+template <class M = Mesh>
+M refined_bipyramid(int n)
+{
+  M triangles = testing_utils::bipyramid<M>(n);
+  S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+  return triangles;
+}
+
 S::Limit_sample::Point to_double(const KE::Point_3& p)
 {
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
@@ -192,12 +209,9 @@ void expect_derivatives_of_positions(const Mesh& mesh, const Mask& mask,
 
 TEST(LimitSurface, derivatives_agree_with_differences_of_positions)
 {
-  Mesh quads = testing_utils::prism<Mesh>(5);
-  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
-  expect_derivatives_of_positions(quads, S::Catmull_clark_mask<Mesh>(), {{0.3, 0.6}, {0.05, 0.1}, {0.81, 0.27}});
-  Mesh triangles = testing_utils::bipyramid<Mesh>(5);
-  S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
-  expect_derivatives_of_positions(triangles, S::Loop_mask<Mesh>(), {{0.3, 0.6}, {0.05, 0.1}, {0.21, 0.27}});
+  expect_derivatives_of_positions(refined_prism(5), S::Catmull_clark_mask<Mesh>(),
+                                  {{0.3, 0.6}, {0.05, 0.1}, {0.81, 0.27}});
+  expect_derivatives_of_positions(refined_bipyramid(5), S::Loop_mask<Mesh>(), {{0.3, 0.6}, {0.05, 0.1}, {0.21, 0.27}});
 }
 
 TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
@@ -264,20 +278,12 @@ void expect_eigenbasis_to_agree_with_exact_refinement(const Mesh& mesh, const Ex
 TEST(LimitSurface, stam_eigenbasis_agrees_with_exact_refinement)
 {
   for(const int n : {3, 5, 8}) {
-    Mesh quads = testing_utils::prism<Mesh>(n);
-    Exact_mesh exact_quads = testing_utils::prism<Exact_mesh>(n);
-    S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
-    S::catmull_clark_subdivision(exact_quads, S::parameters::number_of_iterations(1));
     expect_eigenbasis_to_agree_with_exact_refinement<S::Catmull_clark_mask<Mesh>, S::Catmull_clark_mask<Exact_mesh>>(
-      quads, exact_quads, n);
+      refined_prism(n), refined_prism<Exact_mesh>(n), n);
   }
   for(const int n : {4, 5, 8}) {
-    Mesh triangles = testing_utils::bipyramid<Mesh>(n);
-    Exact_mesh exact_triangles = testing_utils::bipyramid<Exact_mesh>(n);
-    S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
-    S::loop_subdivision(exact_triangles, S::parameters::number_of_iterations(1));
-    expect_eigenbasis_to_agree_with_exact_refinement<S::Loop_mask<Mesh>, S::Loop_mask<Exact_mesh>>(triangles,
-                                                                                                   exact_triangles, n);
+    expect_eigenbasis_to_agree_with_exact_refinement<S::Loop_mask<Mesh>, S::Loop_mask<Exact_mesh>>(
+      refined_bipyramid(n), refined_bipyramid<Exact_mesh>(n), n);
   }
 }
 
@@ -295,11 +301,9 @@ TEST(LimitSurface, stam_eigenbasis_agrees_with_exact_refinement)
 TEST(LimitSurface, diagonalisability_of_the_local_matrix_by_valence)
 {
   for(int n = 3; n <= 16; ++n) {
-    Mesh quads = testing_utils::prism<Mesh>(n);
-    S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+    const Mesh quads = refined_prism(n);
     const S::Limit_surface<Mesh> cc(quads);
-    Mesh triangles = testing_utils::bipyramid<Mesh>(n);
-    S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+    const Mesh triangles = refined_bipyramid(n);
     const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);
     for(const auto f : quads.faces()) // near each corner: the extraordinary one may be any
       for(const auto& [u, v] : {std::make_pair(0.01, 0.02), {0.98, 0.03}, {0.97, 0.99}, {0.02, 0.96}})
@@ -341,11 +345,9 @@ TEST(LimitSurface, eigenbasis_eigenvalues_by_valence)
 {
   const double pi = 3.14159265358979323846;
   for(int n : {3, 5, 8}) {
-    Mesh quads = testing_utils::prism<Mesh>(n);
-    S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
+    const Mesh quads = refined_prism(n);
     const S::Limit_surface<Mesh> cc(quads);
-    Mesh triangles = testing_utils::bipyramid<Mesh>(n);
-    S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
+    const Mesh triangles = refined_bipyramid(n);
     const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);
     for(const auto f : quads.faces())
       for(const auto& [u, v] : {std::make_pair(0.01, 0.02), {0.98, 0.03}, {0.97, 0.99}, {0.02, 0.96}})
@@ -446,12 +448,8 @@ TEST(LimitSurface, stencil_tables_re_evaluate_the_locations)
 {
   expect_stencils_to_evaluate(testing_utils::mixed_box<Exact_mesh>(), S::Catmull_clark_mask<Exact_mesh>(), 0);
   expect_stencils_to_evaluate(testing_utils::bipyramid<Exact_mesh>(5), S::Loop_mask<Exact_mesh>(), 0);
-  Mesh quads = testing_utils::prism<Mesh>(5);
-  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
-  expect_stencils_to_evaluate(quads, S::Catmull_clark_mask<Mesh>(), 1e-12);
-  Mesh triangles = testing_utils::bipyramid<Mesh>(5);
-  S::loop_subdivision(triangles, S::parameters::number_of_iterations(1));
-  expect_stencils_to_evaluate(triangles, S::Loop_mask<Mesh>(), 1e-12);
+  expect_stencils_to_evaluate(refined_prism(5), S::Catmull_clark_mask<Mesh>(), 1e-12);
+  expect_stencils_to_evaluate(refined_bipyramid(5), S::Loop_mask<Mesh>(), 1e-12);
   const Mesh box = testing_utils::mixed_box<Mesh>();
   const S::Limit_surface<Mesh> surface(box);
   EXPECT_THROW(surface.stencil_tables({{*box.faces().begin(), -1, 2.0, 0.5}}), S::Bad_input);
@@ -601,9 +599,7 @@ void expect_kept_children_to_agree(const Mesh& mesh)
 TEST(LimitSurface, kept_children_give_the_values_of_a_fresh_refinement)
 {
   expect_kept_children_to_agree<S::Catmull_clark_mask<Mesh>>(testing_utils::mixed_box<Mesh>());
-  Mesh quads = testing_utils::prism<Mesh>(5);
-  S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
-  expect_kept_children_to_agree<S::Catmull_clark_mask<Mesh>>(quads);
+  expect_kept_children_to_agree<S::Catmull_clark_mask<Mesh>>(refined_prism(5));
   for(const int n : {3, 5}) {
     const Mesh triangles = testing_utils::bipyramid<Mesh>(n);
     expect_kept_children_to_agree<S::Loop_mask<Mesh>>(triangles);
@@ -629,10 +625,8 @@ double gaussian_curvature(const S::Limit_sample& s)
 TEST(LimitSurface, curvature_next_to_an_extraordinary_vertex_keeps_its_digits)
 {
   for(const int n : {3, 5}) {
-    Mesh quads = testing_utils::prism<Mesh>(n);
-    Exact_mesh exact = testing_utils::prism<Exact_mesh>(n);
-    S::catmull_clark_subdivision(quads, S::parameters::number_of_iterations(1));
-    S::catmull_clark_subdivision(exact, S::parameters::number_of_iterations(1));
+    Mesh quads = refined_prism(n);
+    Exact_mesh exact = refined_prism<Exact_mesh>(n);
     // a curved surface: lift the points off the prism's planes
     for(const auto v : quads.vertices()) {
       const K::Point_3 p = quads.point(v);
