@@ -52,9 +52,12 @@ Job_ptr ours_limit_build(const Input& input, Scheme scheme);
 std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
                                 std::vector<bool>& refused);
 /// `Limit_surface::evaluate(f, u, v)` at every location, the surface made and
-/// its eigenbases built outside the timer; output points: the positions, in
-/// the order of the locations
-Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations);
+/// its eigenbases built outside the timer; `keep`: the surface keeps the
+/// faces' trees (`cached_faces`, default), so that after the warm-up every
+/// face is found kept; otherwise (`cached_faces = 0`) every evaluation starts
+/// from the mesh. Output points: the positions, in the order of the locations
+Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                              bool keep);
 /// `tessellate(surface, out, rate, output_normals(true))`, the surface made
 /// outside the timer; output points: the vertices of `out` (none if it
 /// throws `Bad_input`)

@@ -770,13 +770,15 @@ void limit_evaluation_rows(const Options& options)
     if(locations.empty())
       return;
     Job_ptr build[2] = {ours_limit_build(in, scheme), osd_limit_build(in.soup, scheme)};
-    Job_ptr eval[3] = {ours_limit_evaluation(in, scheme, locations),
-                       osd_limit_evaluation(in.soup, scheme, locations, false),
-                       osd_limit_evaluation(in.soup, scheme, locations, true)};
+    // ours kept, Bfr per location, Bfr per face, ours from the mesh every time
+    Job_ptr eval[4] = {
+      ours_limit_evaluation(in, scheme, locations, true), osd_limit_evaluation(in.soup, scheme, locations, false),
+      osd_limit_evaluation(in.soup, scheme, locations, true), ours_limit_evaluation(in, scheme, locations, false)};
     const std::vector<double> tb = time_jobs({build[0].get(), build[1].get()}, options.runs);
-    const std::vector<double> te = time_jobs({eval[0].get(), eval[1].get(), eval[2].get()}, options.runs);
+    const std::vector<double> te =
+      time_jobs({eval[0].get(), eval[1].get(), eval[2].get(), eval[3].get()}, options.runs);
     const double n = static_cast<double>(locations.size());
-    const double ns[3] = {te[0] / n * 1e9, te[1] / n * 1e9, te[2] / n * 1e9};
+    const double ns[4] = {te[0] / n * 1e9, te[1] / n * 1e9, te[2] / n * 1e9, te[3] / n * 1e9};
     std::size_t regular = 0;
     std::vector<bool> is_regular;
     for(const Limit_location& at : locations) {
@@ -786,7 +788,7 @@ void limit_evaluation_rows(const Options& options)
     std::string row = "| " + scheme_name(scheme) + " | " + in.name + " | " + std::to_string(in.mesh.number_of_faces()) +
                       " | " + seconds(tb[0]) + " | " + (build[1] ? seconds(tb[1]) : "-") + " | " +
                       std::to_string(locations.size()) + " | " + fixed(100.0 * static_cast<double>(regular) / n, 0) +
-                      " % | " + fixed(ns[0], 0) + " | ";
+                      " % | " + fixed(ns[0], 0) + " | " + fixed(ns[3], 0) + " | ";
     if(!eval[1]) {
       out(row + "- | - | - | - | | - | - |\n");
       return;
@@ -805,10 +807,10 @@ void limit_evaluation_rows(const Options& options)
       regular_distance = "**" + regular_distance + (complete ? "" : ", a point missing") + " DIFFER**";
       missed.push_back("limit positions agree with Bfr on regular patches to 1e-12, " + where);
     }
-    row += fixed(ns[1], 0) + " | " + fixed(ns[2], 0) + " | " + fixed(ns[1] / ns[0]) + " | " + fixed(ns[2] / ns[0]) +
+    row += fixed(ns[1], 0) + " | " + fixed(ns[2], 0) + " | " + fixed(ns[1] / ns[3]) + " | " + fixed(ns[2] / ns[0]) +
            " | " +
-           check(ns[0] < ns[1], "limit evaluation faster than Bfr per location, " + where,
-                 fixed(ns[0], 0) + " ns vs " + fixed(ns[1], 0) + " ns") +
+           check(ns[3] < ns[1], "limit evaluation from the mesh faster than Bfr per location, " + where,
+                 fixed(ns[3], 0) + " ns vs " + fixed(ns[1], 0) + " ns") +
            " | " + regular_distance + " | " + (regular < locations.size() ? scientific(worst[1]) : "(none)") + " |";
     out(row + "\n");
   });
@@ -860,19 +862,24 @@ void limit_section(const Options& options)
       std::to_string(limit_location_count(options)) +
       " random (face, u, v) locations (fixed seed, the same for both), in quads only under Catmull-Clark (so no "
       "sub-quad and Bfr parameterisation of an n-gon to match) and in triangles under Loop. Ours: "
-      "`evaluate(f, u, v)`, which also makes the second derivatives and the normal; `Bfr loc`: "
+      "`evaluate(f, u, v)`, which also makes the second derivatives and the normal; `ours kept`: the surface "
+      "keeps each face's tree (its direct patch, or its refined neighbourhood; `cached_faces`, the default), so "
+      "after the warm-up every location finds its face kept; `ours cold`: `cached_faces = 0`, every evaluation "
+      "starts from the mesh (what scattered points cost); `Bfr loc`: "
       "`InitVertexSurface` + `PreparePatchPoints` + `Evaluate(uv, patchPoints, 3, P, Du, Dv)` for each location "
       "(what scattered points cost); `Bfr face`: the locations sorted by face, one surface per face, then all of "
-      "its locations. `regular`: the share of the locations in a regular patch (corners of valence 4 with quads "
+      "its locations (compare with ours kept). `regular`: the share of the locations in a regular patch (corners of "
+      "valence 4 with quads "
       "around, or of valence 6), the rest in a patch at an extraordinary vertex or next to an n-gon. Target "
-      "(issue 13): one evaluation faster than Bfr's per location.\n"
+      "(issue 13): one evaluation faster than Bfr's per location, ours cold against Bfr loc.\n"
       "- `dist`: the largest distance between the positions of ours and Bfr's, over the bounding-box diagonal, at "
       "the locations in regular patches (both exact there: above 1e-12 is marked DIFFER) and at the others, "
       "where Bfr stops refining at its approximation level (2) and puts a Gregory patch at the extraordinary "
       "corner, which only approximates the limit.\n\n"
-      "| scheme | input | faces | build ours | build Bfr | locations | regular | eval ours ns | Bfr loc ns | Bfr "
-      "face ns | Bfr loc/ours | Bfr face/ours | target faster than Bfr loc | dist regular | dist other |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
+      "| scheme | input | faces | build ours | build Bfr | locations | regular | eval ours kept ns | ours cold ns "
+      "| Bfr loc ns | Bfr face ns | Bfr loc/ours cold | Bfr face/ours kept | target faster than Bfr loc | dist "
+      "regular | dist other |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
   limit_evaluation_rows(options);
   out(
     "\nTessellation, seconds for the whole mesh at a uniform rate (every edge cut in `rate`), the surface made "
@@ -1136,7 +1143,7 @@ int profile(int argc, char** argv, int at, const Options& options)
   else if(peer == "SM-resize")
     job = surface_mesh_resize_floor(in, scheme, levels);
   else if(peer == "ours-limit")
-    job = ours_limit_evaluation(in, scheme, locations);
+    job = ours_limit_evaluation(in, scheme, locations, true);
   else if(peer == "OSD-limit")
     job = osd_limit_evaluation(in.soup, scheme, locations, false);
   else if(peer == "OSD-limit-per-face")

@@ -228,9 +228,12 @@ template <class Surface>
 class Limit_evaluation_job : public Job
 {
 public:
-  Limit_evaluation_job(const Mesh& input, const std::vector<Limit_location>& locations)
+  Limit_evaluation_job(const Mesh& input, const std::vector<Limit_location>& locations, bool keep)
     : m_surface(input), m_locations(locations), m_points(locations.size()), m_derivatives(2 * locations.size())
-  {}
+  {
+    if(!keep) // every evaluation starts from the mesh, as Bfr's per location does
+      m_surface.cached_faces = 0;
+  }
   void run() override
   {
     for(std::size_t i = 0; i < m_locations.size(); ++i) {
@@ -319,12 +322,13 @@ std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::ve
   return refusals<Cc_limit>(input.mesh, locations, refused);
 }
 
-Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations)
+Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
+                              bool keep)
 {
   if(scheme == Scheme::loop)
-    return std::make_unique<Limit_evaluation_job<Loop_limit>>(input.mesh, locations);
+    return std::make_unique<Limit_evaluation_job<Loop_limit>>(input.mesh, locations, keep);
   if(scheme == Scheme::catmull_clark)
-    return std::make_unique<Limit_evaluation_job<Cc_limit>>(input.mesh, locations);
+    return std::make_unique<Limit_evaluation_job<Cc_limit>>(input.mesh, locations, keep);
   return nullptr;
 }
 

@@ -141,38 +141,44 @@ std::array<FT, 15> quartic_monomials(const std::array<FT, 5>& pu, const std::arr
   return m;
 }
 
-// the coefficients of `box_spline_coefficients` in FT, converted once
+// the coefficients of `box_spline_coefficients` in FT, converted once, by monomial
 template <class FT>
-const std::array<std::array<FT, 15>, 12>& box_spline_coefficients_in()
+const std::array<std::array<FT, 12>, 15>& box_spline_coefficients_by_monomial()
 {
-  static const std::array<std::array<FT, 15>, 12> converted = [] {
-    std::array<std::array<FT, 15>, 12> c;
-    for(std::size_t k = 0; k < c.size(); ++k)
-      for(std::size_t n = 0; n < c[k].size(); ++n)
-        c[k][n] = FT(box_spline_coefficients[k][n]);
+  static const std::array<std::array<FT, 12>, 15> converted = [] {
+    std::array<std::array<FT, 12>, 15> c;
+    for(std::size_t n = 0; n < c.size(); ++n)
+      for(std::size_t k = 0; k < c[n].size(); ++k)
+        c[n][k] = FT(box_spline_coefficients[k][n]);
     return c;
   }();
   return converted;
 }
 
-// the weights of the derivative of order (i, j) of the box-spline patch at (u, v)
+/*
+ * The weights of the derivative of order (i, j) of the box-spline patch at
+ * (u, v). Monomial by monomial, so that the 12 sums are independent (each
+ * still adds its terms in the monomials' order): in floating point the loop
+ * over the weights vectorises, and a zero term adds nothing; in an exact
+ * number type the zero terms are skipped.
+ */
 template <class FT>
 std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std::array<FT, 5>& pv, int i, int j)
 {
   const std::array<FT, 15> m = quartic_monomials(pu, pv, i, j);
-  const auto& coefficients = box_spline_coefficients_in<FT>();
-  const FT denominator(box_spline_denominator);
-  std::array<FT, 12> w;
-  for(std::size_t k = 0; k < w.size(); ++k) {
-    FT sum(0);
-    for(std::size_t n = 0; n < m.size(); ++n)
+  const auto& coefficients = box_spline_coefficients_by_monomial<FT>();
+  std::array<FT, 12> sum;
+  sum.fill(FT(0));
+  for(std::size_t n = 0; n < m.size(); ++n)
+    for(std::size_t k = 0; k < sum.size(); ++k)
       if constexpr(std::is_floating_point<FT>::value)
-        sum += coefficients[k][n] * m[n]; // a zero term adds nothing: no branch, the loop vectorises
+        sum[k] += coefficients[n][k] * m[n];
       else if(box_spline_coefficients[k][n] != 0)
-        sum += coefficients[k][n] * m[n];
-    w[k] = sum / denominator;
-  }
-  return w;
+        sum[k] += coefficients[n][k] * m[n];
+  const FT denominator(box_spline_denominator);
+  for(FT& w : sum)
+    w /= denominator;
+  return sum;
 }
 
 } // namespace internal
