@@ -1144,6 +1144,8 @@ int profile(int argc, char** argv, int at, const Options& options)
     job = surface_mesh_resize_floor(in, scheme, levels);
   else if(peer == "ours-limit")
     job = ours_limit_evaluation(in, scheme, locations, true);
+  else if(peer == "ours-limit-cold")
+    job = ours_limit_evaluation(in, scheme, locations, false);
   else if(peer == "OSD-limit")
     job = osd_limit_evaluation(in.soup, scheme, locations, false);
   else if(peer == "OSD-limit-per-face")
@@ -1209,7 +1211,8 @@ int main(int argc, char** argv)
         "before --profile, it applies there too). --meshes: the shared mesh directory (default %s).\n"
         "--profile: only run one job REPEATS times (default 10), for perf; PEER: ours, CGAL, OpenMesh, OSD,\n"
         "ours-2T, ours-stencils, ours-stencils-2T, OSD-stencils, ours-apply, OSD-apply (1 thread), SM-resize (the "
-        "floor),\nours-limit, OSD-limit, OSD-limit-per-face (the limit section's evaluations; LEVELS ignored),\n"
+        "floor),\nours-limit, ours-limit-cold, OSD-limit, OSD-limit-per-face (the limit section's evaluations; LEVELS "
+        "ignored),\n"
         "ours-tessellate, OSD-tessellate (LEVELS: the rate); SCHEME: Loop, "
         "Catmull-Clark, Doo-Sabin, sqrt3; INPUT: tri20k, tri200k,\n"
         "quad200k, mixed, border, fandisk, mushroom, spot, fandisk-creased, rook-creased, tri200k-uv, quad200k-uv.\n",
