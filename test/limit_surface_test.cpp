@@ -26,6 +26,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -652,5 +653,51 @@ TEST(LimitSurface, curvature_next_to_an_extraordinary_vertex_keeps_its_digits)
       ++checked;
     }
     EXPECT_EQ(checked, 2) << "valence " << n;
+  }
+}
+
+// Evaluations from several threads at once share the kept trees (the walk
+// down under the evaluator's lock, the leaf outside it) and give the values
+// one thread gives, bit for bit, also while faces are dropped.
+TEST(LimitSurface, evaluations_from_several_threads_give_the_values_of_one)
+{
+  const Mesh mesh = testing_utils::mixed_box<Mesh>();
+  std::vector<std::tuple<Mesh::Face_index, int, double, double>> locations;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  for(int k = 0; k < 400; ++k) {
+    const auto f = Mesh::Face_index(static_cast<std::uint32_t>(random() % mesh.number_of_faces()));
+    const int corners = static_cast<int>(mesh.degree(f));
+    locations.emplace_back(f, corners == 4 ? -1 : int(random() % std::uint32_t(corners)), uniform(random),
+                           uniform(random));
+  }
+  const auto evaluate = [&](const S::Limit_surface<Mesh>& surface, std::size_t i) {
+    const auto& [f, corner, u, v] = locations[i];
+    return corner < 0 ? surface.evaluate(f, u, v) : surface.evaluate(f, corner, u, v);
+  };
+  const S::Limit_surface<Mesh> alone(mesh);
+  std::vector<S::Limit_sample> expected;
+  for(std::size_t i = 0; i < locations.size(); ++i)
+    expected.push_back(evaluate(alone, i));
+  for(const std::size_t kept : {std::size_t(4096), std::size_t(2)}) {
+    S::Limit_surface<Mesh> shared(mesh);
+    shared.cached_faces = kept;
+    std::vector<S::Limit_sample> found[4];
+    std::vector<std::thread> threads;
+    for(int t = 0; t < 4; ++t)
+      threads.emplace_back([&, t] {
+        for(std::size_t i = 0; i < locations.size(); ++i) // each thread in its own order
+          found[t].push_back(evaluate(shared, (i * (2 * std::size_t(t) + 1)) % locations.size()));
+      });
+    for(std::thread& thread : threads)
+      thread.join();
+    for(int t = 0; t < 4; ++t)
+      for(std::size_t i = 0; i < locations.size(); ++i) {
+        const S::Limit_sample& a = expected[(i * (2 * std::size_t(t) + 1)) % locations.size()];
+        EXPECT_EQ(a.position, found[t][i].position) << "thread " << t << ", kept " << kept;
+        EXPECT_EQ(a.du, found[t][i].du);
+        EXPECT_EQ(a.dvv, found[t][i].dvv);
+        EXPECT_EQ(a.normal, found[t][i].normal);
+      }
   }
 }
