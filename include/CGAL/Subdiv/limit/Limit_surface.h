@@ -149,6 +149,13 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * extraordinary corner is evaluated at that corner (the surface moves by
  * about lambda^`max_depth` times the patch's size there, lambda < 0.65 the
  * subdominant eigenvalue).
+ *
+ * What an evaluation makes is kept for the next ones on the same face
+ * (`cached_faces`): the face's direct patch (control points, or Stam's
+ * eigen-coefficients) or its refined neighbourhood, down to the children
+ * the parameters reached; the values are bit for bit those of a fresh
+ * refinement. Evaluations may run in several threads at once (copies of
+ * the evaluator share what is kept).
  */
 template <class PolygonMesh, class Mask = Catmull_clark_mask<PolygonMesh>>
 class Limit_surface
