@@ -73,12 +73,15 @@ S::Limit_sample::Vector unit(const KE::Vector_3& n)
  * base faces around it (face_origin_map): there the evaluator's position is
  * the exact limit of that vertex (project_to_limit), converted to double,
  * bit for bit, and its normal the limit normal's direction (limit_normals)
- * but at a border corner with one face.
+ * but at a border corner with one face. The same whether the evaluator
+ * starts from the whole mesh refined once or refines each face's
+ * neighbourhood.
  */
-template <class Mask = S::Catmull_clark_mask<Exact_mesh>>
-void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const Mask& mask = Mask())
+template <class Mask>
+void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const Mask& mask, bool refine_whole_mesh)
 {
-  const S::Limit_surface<Exact_mesh, Mask> surface(base, mask);
+  S::Limit_surface<Exact_mesh, Mask> surface(base, mask);
+  surface.refine_whole_mesh = refine_whole_mesh;
   Exact_mesh refined = base;
   const auto origin = refined.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
   S::Carried_data<Exact_mesh> data;
@@ -122,6 +125,15 @@ void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const 
   }
   EXPECT_GT(extraordinary, 0u);
   EXPECT_GT(checked, refined.number_of_vertices()); // the vertices on base edges, from both faces
+}
+
+template <class Mask = S::Catmull_clark_mask<Exact_mesh>>
+void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const Mask& mask = Mask())
+{
+  for(const bool whole_mesh : {true, false}) {
+    SCOPED_TRACE(whole_mesh ? "the whole mesh refined once" : "each neighbourhood refined");
+    expect_limit_of_refined_vertices(base, levels, mask, whole_mesh);
+  }
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 /// second derivatives and the normal at any (face, u, v), by local
 /// refinement down to a regular patch, evaluated as a bicubic B-spline.
 
+#include <CGAL/Iterator_range.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv/Carried_data.h>
@@ -23,6 +24,7 @@
 #include <CGAL/Subdiv/stencils/Stencil_table.h>
 #include <CGAL/Subdiv/subdivide.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -36,6 +38,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <memory>
@@ -150,12 +153,19 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * about lambda^`max_depth` times the patch's size there, lambda < 0.65 the
  * subdominant eigenvalue).
  *
+ * A face of the mesh that is not a direct patch starts from its children
+ * in the whole mesh refined once (`refine_whole_mesh`, made by the first
+ * evaluation that needs it and kept): after one level they are regular or
+ * Stam patches, but near several extraordinary vertices, so most
+ * evaluations refine nothing at all. The values are those of the local
+ * refinement, exactly in an exact kernel (up to rounding in double).
+ *
  * What an evaluation makes is kept for the next ones on the same face
  * (`cached_faces`): the face's direct patch (control points, or Stam's
- * eigen-coefficients) or its refined neighbourhood, down to the children
- * the parameters reached; the values are bit for bit those of a fresh
- * refinement. Evaluations may run in several threads at once (copies of
- * the evaluator share what is kept).
+ * eigen-coefficients) or its children, down to the ones the parameters
+ * reached; the values are bit for bit those of a fresh evaluation.
+ * Evaluations may run in several threads at once (copies of the evaluator
+ * share what is kept).
  */
 template <class PolygonMesh, class Mask = Catmull_clark_mask<PolygonMesh>>
 class Limit_surface
@@ -185,6 +195,10 @@ public:
   /// faces whose refined neighbourhoods (down to the patches that evaluations reached) are kept, so that
   /// the next evaluation on them refines nothing; the oldest face is dropped first. 0 keeps none.
   std::size_t cached_faces = 4096;
+  /// whether the first evaluation on a face that is not a direct patch refines the whole mesh once, kept
+  /// for all the evaluations after it (about four times the mesh's memory), which then start from the
+  /// children of their faces there; `false` copies and refines each such face's neighbourhood instead
+  bool refine_whole_mesh = true;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
@@ -472,13 +486,16 @@ private:
     return origins;
   }
 
-  // the halfedge into corner 0 of the child of the refined patch's face (face 0) at `place`
-  static Patch_halfedge find_child(const Patch_mesh& mesh, const Origin_map& origins, const Child_place& place)
+  // the halfedge into corner 0 of the child at `place` of face `parent`, among the faces `candidates`
+  // of the refined mesh
+  template <class Faces>
+  static Patch_halfedge find_child(const Patch_mesh& mesh, const Origin_map& origins, const Faces& candidates,
+                                   std::size_t parent, const Child_place& place)
   {
-    for(const auto g : mesh.faces()) {
+    for(const auto g : candidates) {
       const Face_origin& origin = origins[g];
       const CGAL::Bbox_2 box = origin.box();
-      if(origin.face != 0 || origin.sub_quad != place.sub_quad || box.xmin() != place.box_min[0] ||
+      if(origin.face != parent || origin.sub_quad != place.sub_quad || box.xmin() != place.box_min[0] ||
          box.ymin() != place.box_min[1])
         continue;
       Patch_halfedge h = mesh.halfedge(g);
@@ -565,12 +582,14 @@ private:
         for(Eigen::Index d = 0; d < 3 && first + d < K; ++d)
           matrix(row, first + d) = CGAL::to_double(p[int(d)]);
       };
-      const auto child_ring = Points(mesh, find_child(mesh, origins, {-1, {0, 0}, {0, 0}})).ring_vertices();
+      const auto child_ring =
+        Points(mesh, find_child(mesh, origins, mesh.faces(), 0, {-1, {0, 0}, {0, 0}})).ring_vertices();
       CGAL_assertion(child_ring.size() == ring.size());
       for(Eigen::Index r = 0; r < K; ++r)
         set_columns(A, r, mesh.point(child_ring[r]));
       for(std::size_t k = 0; k < 3; ++k) {
-        const auto points = Points(mesh, find_child(mesh, origins, regular_children()[k])).control_points();
+        const auto points =
+          Points(mesh, find_child(mesh, origins, mesh.faces(), 0, regular_children()[k])).control_points();
         for(Eigen::Index r = 0; r < N; ++r)
           set_columns(children[k], r, points[r]);
       }
@@ -753,12 +772,10 @@ private:
    * evaluated instead. So a face's neighbourhood is refined once for all
    * the parameters on it.
    */
-  struct Node;
   struct Refined
   {
     Patch_mesh mesh;
     Origin_map origins;
-    std::vector<std::unique_ptr<Node>> children; // by `child_slot()`
   };
   struct Node
   {
@@ -767,7 +784,11 @@ private:
     // corner; a direct patch rarely needs it): a copy out of the mesh it lies in, which outlives it
     std::function<Patch()> make_patch;
     std::optional<Patch> patch;
+    // a face of the mesh (its ordinal) whose children are those of the mesh refined once
+    // (`First_level`); or, if none, the local patch refined once
+    std::optional<std::size_t> mesh_face;
     std::unique_ptr<Refined> refined;
+    std::vector<std::unique_ptr<Node>> children; // by `child_slot()`
 
     Patch& local_patch()
     {
@@ -800,22 +821,102 @@ private:
     return (place.box_min[0] > 0 ? 1 : 0) + (place.box_min[1] > 0 ? 2 : 0);
   }
 
-  // the child of the node's face at `place`, refining the node's patch the first time
+  /*
+   * The child of the node's face at `place`: for a face of the mesh, its
+   * child in the mesh refined once (made the first time, the caller holding
+   * the cache's lock); for any other node, its child in its local patch,
+   * refined the first time.
+   */
   Node& child_of(Node& node, const Child_place& place) const
   {
+    const std::size_t slot = child_slot(place);
+    if(node.children.size() <= slot)
+      node.children.resize(slot + 1);
+    std::unique_ptr<Node>& child = node.children[slot];
+    if(child)
+      return *child;
+    if(node.mesh_face) {
+      const First_level& level = first_level();
+      const auto children = level.children_of(*node.mesh_face);
+      child =
+        make_node(level.mesh, find_child(level.mesh, level.origins, children, level.copy[*node.mesh_face], place));
+      return *child;
+    }
     if(!node.refined) {
       node.refined = std::make_unique<Refined>();
       node.refined->mesh = node.local_patch().mesh;
       node.refined->origins = refine(node.refined->mesh);
     }
-    Refined& refined = *node.refined;
-    const std::size_t slot = child_slot(place);
-    if(refined.children.size() <= slot)
-      refined.children.resize(slot + 1);
-    std::unique_ptr<Node>& child = refined.children[slot];
-    if(!child)
-      child = make_node(refined.mesh, find_child(refined.mesh, refined.origins, place));
+    const Refined& refined = *node.refined;
+    child = make_node(refined.mesh, find_child(refined.mesh, refined.origins, refined.mesh.faces(), 0, place));
     return *child;
+  }
+
+  /*
+   * The mesh refined once, with each face's children by its ordinal: a
+   * face of the mesh that is not a direct patch finds its children here,
+   * so that no evaluation copies and refines a neighbourhood of the mesh.
+   * (After one level every child is a regular patch or has one
+   * extraordinary corner, but at a corner of several extraordinary
+   * vertices, an n-gon's sub-quad at an extraordinary corner, Loop's
+   * valence 3 and some border configurations; those refine their local
+   * patches from here.)
+   */
+  struct First_level
+  {
+    Patch_mesh mesh;
+    Origin_map origins;
+    std::vector<std::size_t> copy;                         // face k's index in the copy refined
+    std::vector<std::size_t> first;                        // face k's children: [first[k], first[k + 1])
+    std::vector<typename Patch_mesh::Face_index> children; // of the faces, by the ordinal of their parent
+
+    CGAL::Iterator_range<typename std::vector<typename Patch_mesh::Face_index>::const_iterator> children_of(
+      std::size_t face) const
+    {
+      return {children.begin() + std::ptrdiff_t(first[face]), children.begin() + std::ptrdiff_t(first[face + 1])};
+    }
+  };
+
+  // the mesh refined once, made the first time (the caller holds the cache's lock)
+  const First_level& first_level() const
+  {
+    std::unique_ptr<First_level>& level = m_cache->first_level;
+    if(!level)
+      level = refine_mesh_once();
+    return *level;
+  }
+
+  std::unique_ptr<First_level> refine_mesh_once() const
+  {
+    auto level = std::make_unique<First_level>();
+    std::vector<std::pair<halfedge_descriptor, Patch_halfedge>> halfedge_copies;
+    std::vector<std::pair<face_descriptor, typename Patch_mesh::Face_index>> face_copies;
+    CGAL::copy_face_graph(*m_mesh, level->mesh,
+                          CGAL::parameters::halfedge_to_halfedge_output_iterator(std::back_inserter(halfedge_copies))
+                            .face_to_face_output_iterator(std::back_inserter(face_copies)));
+    std::vector<Patch_halfedge> copy_of(halfedge_copies.size());
+    for(const auto& [h, copy] : halfedge_copies)
+      copy_of[ordinal_of(h)] = copy;
+    // the copy's faces by the ordinal of theirs in the mesh, each with its corner 0 where the mesh has it
+    std::vector<std::size_t> parent(num_faces(level->mesh));
+    level->copy.resize(parent.size());
+    for(const auto& [f, copy] : face_copies) {
+      parent[copy.idx()] = ordinal_of(f);
+      level->copy[ordinal_of(f)] = copy.idx();
+      level->mesh.set_halfedge(copy, copy_of[ordinal_of(halfedge(f, *m_mesh))]);
+    }
+    level->origins = refine(level->mesh);
+    const std::size_t faces_of_mesh = parent.size();
+    level->first.assign(faces_of_mesh + 1, 0);
+    for(const auto g : level->mesh.faces())
+      ++level->first[parent[level->origins[g].face] + 1];
+    for(std::size_t k = 0; k < faces_of_mesh; ++k)
+      level->first[k + 1] += level->first[k];
+    level->children.resize(level->first.back());
+    std::vector<std::size_t> next(level->first.begin(), level->first.end() - 1);
+    for(const auto g : level->mesh.faces())
+      level->children[next[parent[level->origins[g].face]]++] = g;
+    return level;
   }
 
   // where the walk down to a parameter ends: a direct patch or a corner of a node, with the
@@ -886,6 +987,7 @@ private:
     std::mutex mutex;
     std::vector<std::shared_ptr<Node>> roots;
     std::deque<std::size_t> order;
+    std::unique_ptr<First_level> first_level; // kept whatever `cached_faces` is
   };
 
   /*
@@ -905,6 +1007,8 @@ private:
       root = m_cache->roots[key];
     else {
       root = make_node(*m_mesh, halfedge(at.face, *m_mesh));
+      if(refine_whole_mesh)
+        root->mesh_face = key;
       if(cached_faces > 0) {
         m_cache->roots[key] = root;
         m_cache->order.push_back(key);
