@@ -93,7 +93,10 @@ public:
   const Eigen::VectorXd& eigenvalues() const { return m_lambda; }
 
   /// the coordinates of the control points (one per row) in the eigenbasis
-  Matrix coefficients(const Matrix& control_points) const { return m_inverse_vectors * control_points; }
+  Matrix coefficients(const Matrix& control_points) const
+  {
+    return m_inverse_vectors.lazyProduct(control_points); // (small: no blocking and packing)
+  }
 
   /*
    * The limit over child `k` of the patch `level` levels down from the one
@@ -106,22 +109,24 @@ public:
   std::array<Eigen::RowVector3d, 6> evaluate(const Matrix& coefficients, std::size_t k, int level,
                                              const Patch_weights<double, N>& w) const
   {
-    // lambda_i^level, then times 2^level or 4^level for the derivatives (exact)
-    Eigen::ArrayXd power(m_lambda.size());
-    for(Eigen::Index i = 0; i < power.size(); ++i)
-      power(i) = integer_power(m_lambda(i), level);
-    const auto eigen_weights = [&](const std::array<double, N>& basis, int order) {
-      Eigen::RowVectorXd row = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(basis.data()) * m_children[k];
-      row.array() *= power.transpose() * std::ldexp(1.0, order * level);
-      // the constant mode (eigenvalue 1: a translation) has no derivative; its
-      // weight is a sum of derivative weights, zero but for rounding, which the
-      // factor 2^level or 4^level would blow up near the corner
-      if(order > 0 && m_constant_mode >= 0)
-        row(m_constant_mode) = 0;
-      return Eigen::RowVector3d(row * coefficients);
-    };
-    return {eigen_weights(w.position, 0), eigen_weights(w.du, 1),  eigen_weights(w.dv, 1),
-            eigen_weights(w.duu, 2),      eigen_weights(w.duv, 2), eigen_weights(w.dvv, 2)};
+    // the six rows of basis weights in the eigenbasis, in one product
+    Eigen::Matrix<double, 6, int(N)> basis;
+    const std::array<const std::array<double, N>*, 6> rows = {&w.position, &w.du, &w.dv, &w.duu, &w.duv, &w.dvv};
+    for(int r = 0; r < 6; ++r)
+      basis.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(rows[std::size_t(r)]->data());
+    Eigen::Matrix<double, 6, Eigen::Dynamic> eigen_weights = basis.lazyProduct(m_children[k]);
+    // times lambda_i^level, and 2^level or 4^level for the derivatives (exact)
+    for(Eigen::Index i = 0; i < eigen_weights.cols(); ++i)
+      eigen_weights.col(i) *= integer_power(m_lambda(i), level);
+    eigen_weights.middleRows<2>(1) *= std::ldexp(1.0, level);
+    eigen_weights.bottomRows<3>() *= std::ldexp(1.0, 2 * level);
+    // the constant mode (eigenvalue 1: a translation) has no derivative; its
+    // weight is a sum of derivative weights, zero but for rounding, which the
+    // factor 2^level or 4^level would blow up near the corner
+    if(m_constant_mode >= 0)
+      eigen_weights.col(m_constant_mode).tail<5>().setZero();
+    const Eigen::Matrix<double, 6, 3> values = eigen_weights.lazyProduct(coefficients);
+    return {values.row(0), values.row(1), values.row(2), values.row(3), values.row(4), values.row(5)};
   }
 
 private:

@@ -159,8 +159,9 @@ const std::array<std::array<FT, 12>, 15>& box_spline_coefficients_by_monomial()
  * The weights of the derivative of order (i, j) of the box-spline patch at
  * (u, v). Monomial by monomial, so that the 12 sums are independent (each
  * still adds its terms in the monomials' order): in floating point the loop
- * over the weights vectorises, and a zero term adds nothing; in an exact
- * number type the zero terms are skipped.
+ * over the weights vectorises; in an exact number type the zero
+ * coefficients are skipped. The monomials that the derivative makes zero
+ * are skipped in both (adding them changed no bit: the sums start at +0).
  */
 template <class FT>
 std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std::array<FT, 5>& pv, int i, int j)
@@ -169,12 +170,15 @@ std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std:
   const auto& coefficients = box_spline_coefficients_by_monomial<FT>();
   std::array<FT, 12> sum;
   sum.fill(FT(0));
-  for(std::size_t n = 0; n < m.size(); ++n)
+  for(std::size_t n = 0; n < m.size(); ++n) {
+    if(quartic_exponents[n][0] < i || quartic_exponents[n][1] < j)
+      continue; // a monomial that the derivative makes zero
     for(std::size_t k = 0; k < sum.size(); ++k)
       if constexpr(std::is_floating_point<FT>::value)
         sum[k] += coefficients[n][k] * m[n];
       else if(box_spline_coefficients[k][n] != 0)
         sum[k] += coefficients[n][k] * m[n];
+  }
   const FT denominator(box_spline_denominator);
   for(FT& w : sum)
     w /= denominator;
