@@ -72,14 +72,14 @@ public:
       return false; // opposite sides on the border, or a corner that is not kept
     int i = 0;
     for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
-      const vertex_descriptor corner = target(h, m);
       // corner i ends side i - 1 (from corner i - 1) and starts side i
       const int on_border = ((sides >> i) & 1) + ((sides >> ((i + 3) % 4)) & 1);
       ++i;
-      if(on_border > 0 ? valence(corner) != std::size_t(4 - on_border) || !is_border(corner)
-                       : valence(corner) != regular_valence || is_border(corner))
+      const Corner_shape c = corner_shape(h);
+      if(on_border > 0 ? c.valence != std::size_t(4 - on_border) || !c.border
+                       : c.valence != regular_valence || c.border)
         return false;
-      if(!faces_around_are_regular(h))
+      if(!c.faces_regular)
         return false;
     }
     return true;
@@ -107,10 +107,10 @@ public:
     Extraordinary_corner found;
     int i = 0;
     for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
-      const vertex_descriptor corner = target(h, m);
-      if(is_border(corner) || !faces_around_are_regular(h))
+      const Corner_shape c = corner_shape(h);
+      if(c.border || !c.faces_regular)
         return {};
-      if(const std::size_t k = valence(corner); k != regular_valence) {
+      if(const std::size_t k = c.valence; k != regular_valence) {
         if(found.valence > 0)
           return {};
         found.index = i;
@@ -235,16 +235,39 @@ public:
   }
 
 private:
-  std::size_t valence(vertex_descriptor v) const { return CGAL::halfedges_around_target(v, m).size(); }
-  bool is_border(vertex_descriptor v) const { return bool(CGAL::is_border(v, m)); }
-
-  // whether every face around the target of h has `face_corners` corners
-  bool faces_around_are_regular(halfedge_descriptor h) const
+  /*
+   * The target of h in one walk around it (the patch tests run on every
+   * evaluation): its valence, whether it is on the border, and whether
+   * every face around it has `face_corners` corners.
+   */
+  struct Corner_shape
   {
-    for(const auto g : CGAL::faces_around_target(h, m))
-      if(g != GT::null_face() && CGAL::halfedges_around_face(halfedge(g, m), m).size() != face_corners)
-        return false;
-    return true;
+    std::size_t valence = 0;
+    bool border = false;
+    bool faces_regular = true;
+  };
+  Corner_shape corner_shape(halfedge_descriptor h) const
+  {
+    Corner_shape c;
+    for(const halfedge_descriptor g : CGAL::halfedges_around_target(h, m)) {
+      ++c.valence;
+      if(CGAL::is_border(g, m))
+        c.border = true;
+      else if(c.faces_regular && !has_corners(g, face_corners))
+        c.faces_regular = false;
+    }
+    return c;
+  }
+  // whether the face of g has n corners (walking n + 1 halfedges at most)
+  bool has_corners(halfedge_descriptor g, std::size_t n) const
+  {
+    halfedge_descriptor h = g;
+    for(std::size_t k = 1; k <= n; ++k) {
+      h = next(h, m);
+      if(h == g)
+        return k == n;
+    }
+    return false;
   }
 
   // the points beyond border side `side` of the grid: p = 2 b - q
