@@ -172,7 +172,8 @@ std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std:
   sum.fill(FT(0));
   for(std::size_t n = 0; n < m.size(); ++n) {
     if(quartic_exponents[n][0] < i || quartic_exponents[n][1] < j)
-      continue; // a monomial that the derivative makes zero
+      continue;       // a monomial that the derivative makes zero
+#pragma GCC unroll 12 // (unrolled, the sums stay in registers rather than a store and a load per term)
     for(std::size_t k = 0; k < sum.size(); ++k)
       if constexpr(std::is_floating_point<FT>::value)
         sum[k] += coefficients[n][k] * m[n];
