@@ -619,14 +619,6 @@ TEST(LimitSurface, kept_children_give_the_values_of_a_fresh_refinement)
   }
 }
 
-// the Gaussian curvature (LN - M^2) / (EG - F^2) of a limit sample
-double gaussian_curvature(const S::Limit_sample& s)
-{
-  const double E = s.du * s.du, F = s.du * s.dv, G = s.dv * s.dv;
-  const double L = s.duu * s.normal, M = s.duv * s.normal, N = s.dvv * s.normal;
-  return (L * N - M * M) / (E * G - F * F);
-}
-
 /*
  * Near an extraordinary vertex, Stam's second derivatives in double keep
  * their digits: the constant mode, whose derivative weights sum to zero
@@ -659,8 +651,8 @@ TEST(LimitSurface, curvature_next_to_an_extraordinary_vertex_keeps_its_digits)
       if(i == 4 || checked == 2)
         continue;
       const double u = i == 0 || i == 3 ? a : 1 - a, v = i < 2 ? b : 1 - b;
-      const double k = gaussian_curvature(surface.evaluate(f, u, v));
-      const double k_exact = gaussian_curvature(truth.evaluate(Exact_mesh::Face_index(std::uint32_t(f)), u, v));
+      const double k = S::gaussian_curvature(surface.evaluate(f, u, v));
+      const double k_exact = S::gaussian_curvature(truth.evaluate(Exact_mesh::Face_index(std::uint32_t(f)), u, v));
       EXPECT_NEAR(k, k_exact, 1e-6 * std::abs(k_exact)) << "valence " << n << ", face " << f;
       ++checked;
     }
@@ -712,4 +704,38 @@ TEST(LimitSurface, evaluations_from_several_threads_give_the_values_of_one)
         EXPECT_EQ(a.normal, found[t][i].normal);
       }
   }
+}
+
+/*
+ * The curvatures of a sample: the bicubic B-spline of control points on
+ * the paraboloid z = x^2 + y^2 is that paraboloid (raised by 2/3), whose
+ * Gaussian curvature is 4 / W^2 and mean curvature 2 (1 + 2 x^2 + 2 y^2) /
+ * W^(3/2), W = 1 + 4 x^2 + 4 y^2, towards +z; at an extraordinary vertex,
+ * whose derivatives are zero, neither is a number.
+ */
+TEST(LimitSurface, curvatures_of_a_paraboloid)
+{
+  const Mesh paraboloid = testing_utils::grid<Mesh>(
+    6, 6, [](int i, int j) { return K::Point_3(i - 3, j - 3, (i - 3) * (i - 3) + (j - 3) * (j - 3)); }, false);
+  const S::Limit_surface<Mesh> surface(paraboloid);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  std::size_t checked = 0;
+  for(const auto f : paraboloid.faces()) {
+    const auto corner = paraboloid.point(paraboloid.target(paraboloid.halfedge(f)));
+    if(std::abs(corner.x()) > 1.5 || std::abs(corner.y()) > 1.5)
+      continue; // the regular patches only: every corner's ring inside the grid
+    const S::Limit_sample s = surface.evaluate(f, uniform(random), uniform(random));
+    const double x = s.position.x(), y = s.position.y(), W = 1 + 4 * x * x + 4 * y * y;
+    EXPECT_NEAR(s.position.z(), x * x + y * y + 2.0 / 3, 1e-12);
+    const double towards_normal = s.normal.z() > 0 ? 1 : -1;
+    EXPECT_NEAR(S::gaussian_curvature(s), 4 / (W * W), 1e-12);
+    EXPECT_NEAR(S::mean_curvature(s), towards_normal * 2 * (1 + 2 * x * x + 2 * y * y) / std::pow(W, 1.5), 1e-12);
+    ++checked;
+  }
+  EXPECT_GE(checked, 9u);
+  const Mesh cube = testing_utils::cube<Mesh>();
+  const S::Limit_sample at_vertex = S::Limit_surface<Mesh>(cube).evaluate(*cube.faces().begin(), 0, 0);
+  EXPECT_TRUE(std::isnan(S::gaussian_curvature(at_vertex)));
+  EXPECT_TRUE(std::isnan(S::mean_curvature(at_vertex)));
 }

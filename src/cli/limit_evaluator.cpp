@@ -39,7 +39,7 @@ struct Limit_evaluator::Model_of : Limit_evaluator::Model
       s = corner >= 0 ? surface.evaluate(f, corner, u, v) : surface.evaluate(f, u, v);
     else
       s = surface.evaluate(f, u, v);
-    return Limit_point{s.position, s.du, s.dv, s.duu, s.duv, s.dvv, s.normal};
+    return s;
   }
 
   Surface tessellate(int rate, bool triangles, bool normals) const override

@@ -11,6 +11,8 @@
 #include "args.h"
 #include "surface_from_soup.h"
 
+#include <CGAL/Subdiv/limit/Limit_sample.h>
+
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -39,12 +41,8 @@ Limit_arguments limit_arguments(const Parsed_args& args, const std::string& comm
 /// the notes of a successful run on stderr, `cgal-subdiv: note: ...`
 void print_notes(const std::vector<std::string>& notes);
 
-/// the limit surface at one parameter, as `CGAL::Subdiv::Limit_sample`
-struct Limit_point
-{
-  Double_kernel::Point_3 position;
-  Double_kernel::Vector_3 du, dv, duu, duv, dvv, normal;
-};
+/// the limit surface at one parameter
+using Limit_point = CGAL::Subdiv::Limit_sample;
 
 /// what the evaluator found for one valence's Stam eigenbasis
 /// (`Limit_surface::eigenbasis_conditions()`, `eigenbasis_eigenvalues()`)

@@ -94,14 +94,6 @@ Surface disk(int n)
   return mesh;
 }
 
-// the Gaussian curvature (LN - M^2) / (EG - F^2) from the derivatives
-double gaussian_curvature(const Limit_point& s)
-{
-  const double E = s.du * s.du, F = s.du * s.dv, G = s.dv * s.dv;
-  const double L = s.duu * s.normal, M = s.duv * s.normal, N = s.dvv * s.normal;
-  return (L * N - M * M) / (E * G - F * F);
-}
-
 // one small quad of the plot: its corners (x, y) on the limit surface and its curvature
 struct Cell
 {
@@ -180,7 +172,7 @@ Panel panel(int n)
     if(result.by_level.empty())
       for(int L = 0; L <= deepest_level; ++L) {
         const auto [u, v] = parameter(i, std::ldexp(0.75, -L), std::ldexp(0.5, -L));
-        result.by_level.push_back(gaussian_curvature(evaluator.evaluate(f, -1, u, v)));
+        result.by_level.push_back(CGAL::Subdiv::gaussian_curvature(evaluator.evaluate(f, -1, u, v)));
       }
     const auto position = [&](double s, double t) {
       const auto [u, v] = parameter(i, s, t);
@@ -195,7 +187,7 @@ Panel panel(int n)
       for(int b = 0; b < rate; ++b) {
         const auto [u, v] = parameter(i, (grid(a) + grid(a + 1)) / 2, (grid(b) + grid(b + 1)) / 2);
         result.cells.push_back({{nodes[a][b], nodes[a + 1][b], nodes[a + 1][b + 1], nodes[a][b + 1]},
-                                gaussian_curvature(evaluator.evaluate(f, -1, u, v))});
+                                CGAL::Subdiv::gaussian_curvature(evaluator.evaluate(f, -1, u, v))});
       }
     // the two sides away from the vertex (the others are a neighbour's)
     std::vector<std::array<double, 2>> side_s, side_t;

@@ -14,6 +14,7 @@
 #include <CGAL/Subdiv/Carried_data.h>
 #include <CGAL/Subdiv/errors.h>
 #include <CGAL/Subdiv/internal/Mesh_numbering.h>
+#include <CGAL/Subdiv/limit/Limit_sample.h>
 #include <CGAL/Subdiv/limit/Stam_eigenbasis.h>
 #include <CGAL/Subdiv/limit/local_patch.h>
 #include <CGAL/Subdiv/limit/patch_basis.h>
@@ -51,21 +52,6 @@
 
 namespace CGAL {
 namespace Subdiv {
-
-/*!
- * \ingroup PkgSubdivAnalysis
- * The limit surface at one parameter: the position, its partial derivatives
- * along the face's u and v (first and second), and the unit normal.
- */
-struct Limit_sample
-{
-  using Point = CGAL::Simple_cartesian<double>::Point_3;
-  using Vector = CGAL::Simple_cartesian<double>::Vector_3;
-  Point position = CGAL::ORIGIN;
-  Vector du = CGAL::NULL_VECTOR, dv = CGAL::NULL_VECTOR;
-  Vector duu = CGAL::NULL_VECTOR, duv = CGAL::NULL_VECTOR, dvv = CGAL::NULL_VECTOR;
-  Vector normal = CGAL::NULL_VECTOR;
-};
 
 /*!
  * \ingroup PkgSubdivStencils
