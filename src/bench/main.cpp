@@ -856,7 +856,8 @@ void limit_section(const Options& options)
       "options above, Bfr's default options), `Bfr::Surface<double>`.\n\n"
       "- `build`: ours = constructing the `Limit_surface` and evaluating it once in every face (u = v = 1/4; a "
       "face with n != 4 corners in its sub-quad at corner 0), which builds the Stam eigenbases of the valences it "
-      "meets (once per valence); Bfr = creating the refiner (not refined) and the factory (Bfr does its per-face "
+      "meets (once per valence) and refines the mesh once if a face needs it; Bfr = creating the refiner (not refined) "
+      "and the factory (Bfr does its per-face "
       "work in `InitVertexSurface`, timed with the evaluations).\n"
       "- `eval`: ns per evaluation of the position and its first derivatives at " +
       std::to_string(limit_location_count(options)) +
@@ -865,7 +866,8 @@ void limit_section(const Options& options)
       "`evaluate(f, u, v)`, which also makes the second derivatives and the normal; `ours kept`: the surface "
       "keeps each face's tree (its direct patch, or its refined neighbourhood; `cached_faces`, the default), so "
       "after the warm-up every location finds its face kept; `ours cold`: `cached_faces = 0`, every evaluation "
-      "starts from the mesh (what scattered points cost); `Bfr loc`: "
+      "starts from the mesh (what scattered points cost; the mesh refined once, which the evaluator keeps for "
+      "faces that are not a direct patch, is made by the build); `Bfr loc`: "
       "`InitVertexSurface` + `PreparePatchPoints` + `Evaluate(uv, patchPoints, 3, P, Du, Dv)` for each location "
       "(what scattered points cost); `Bfr face`: the locations sorted by face, one surface per face, then all of "
       "its locations (compare with ours kept). `regular`: the share of the locations in a regular patch (corners of "
