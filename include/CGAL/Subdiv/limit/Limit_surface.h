@@ -124,9 +124,9 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * any distance from the corner costs one product with the eigenbasis, no
  * refinement; where the matrix is not diagonalisable (Loop at valence 3)
  * such patches are refined as below. Any other
- * face (and every face in an exact kernel) is refined locally (its 1-ring,
- * with the library's own `subdivide()`, in the mesh's number type) and the
- * child that holds (u, v) is evaluated in turn: every child away from an
+ * face (and every face in an exact kernel) is refined (with the library's
+ * own `subdivide()`, in the mesh's number type; see below for where) and
+ * the child that holds (u, v) is evaluated in turn: every child away from an
  * extraordinary vertex is regular after one level, and a parameter at
  * distance d from the extraordinary corner is reached after about
  * log2(1/d) levels. So the evaluation is exact in an exact kernel (up to
