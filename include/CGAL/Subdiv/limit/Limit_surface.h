@@ -183,7 +183,9 @@ public:
   std::size_t cached_faces = 4096;
   /// whether the first evaluation on a face that is not a direct patch refines the whole mesh once, kept
   /// for all the evaluations after it (about four times the mesh's memory), which then start from the
-  /// children of their faces there; `false` copies and refines each such face's neighbourhood instead
+  /// children of their faces there, and the first one at an extraordinary vertex of the mesh computes the
+  /// limit position and normal of every vertex once; `false` copies and refines each such face's
+  /// neighbourhood instead
   bool refine_whole_mesh = true;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
@@ -322,6 +324,7 @@ public:
 private:
   using Eigenbasis = internal::Stam_eigenbasis<quads ? 16 : 12>;
   using Patch = internal::Local_patch<Point>;
+  struct Node; // a face, or a child of one, on the way down to a parameter (below)
   // the position and derivatives, in the mesh's number type
   struct Exact_sample
   {
@@ -417,39 +420,88 @@ private:
    * become regular patches, which give the derivatives there too (the limit
    * masks do not).
    */
-  bool is_ordinary_corner(const Patch& patch, int i) const
+  template <class Source>
+  bool is_ordinary_corner(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0, int i) const
   {
-    Patch_halfedge h = patch.h0;
     for(int k = 0; k < i; ++k)
-      h = patch.mesh.next(h);
-    const auto corner = patch.mesh.target(h);
-    const std::size_t valence = patch.mesh.degree(corner);
-    if(!patch.mesh.is_border(corner))
+      h0 = next(h0, mesh);
+    const std::size_t valence = CGAL::halfedges_around_target(h0, mesh).size();
+    if(!CGAL::is_border(target(h0, mesh), mesh))
       return valence == (quads ? 4u : 6u);
     return quads && (valence == 3 || (valence == 2 && sharp_corners()));
   }
+  bool is_ordinary_corner(Node& node, int i) const
+  {
+    if(node.mesh_face)
+      return is_ordinary_corner(*m_mesh, halfedge(m_numbering->face(*node.mesh_face), *m_mesh), i);
+    return is_ordinary_corner(node.local_patch().mesh, node.local_patch().h0, i);
+  }
 
-  // the limit position and normal of corner i of the patch's face (the masks of the analysis)
-  Exact_sample evaluate_at_corner(Patch patch, int i) const
+  // the sample at an extraordinary vertex: its limit position and normal, no derivatives
+  static Exact_sample vertex_sample(const Point& position, const Vector& normal)
+  {
+    Exact_sample s;
+    s.position = position;
+    s.du = s.dv = s.duu = s.duv = s.dvv = CGAL::NULL_VECTOR;
+    s.at_extraordinary_vertex = true;
+    s.normal = normal;
+    return s;
+  }
+
+  // the limit positions and normals of every vertex of `mesh` (the masks of the analysis), by vertex index
+  std::vector<Exact_sample> limits_of_vertices(Patch_mesh mesh) const
+  {
+    const auto normals = mesh
+                           .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
+                             "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
+                           .first;
+    {
+      // the evaluator keeps the masks of the analysis per configuration
+      const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
+      m_eigenbases->limit.limit_normals(mesh, normals);
+      m_eigenbases->limit.project_to_limit(mesh);
+    }
+    std::vector<Exact_sample> limits;
+    limits.reserve(mesh.number_of_vertices());
+    for(const auto v : mesh.vertices())
+      limits.push_back(vertex_sample(mesh.point(v), normals[v]));
+    return limits;
+  }
+
+  // the limit position and normal of corner i of the patch's face
+  Exact_sample evaluate_at_corner(const Patch& patch, int i) const
   {
     Patch_halfedge h = patch.h0;
     for(int k = 0; k < i; ++k)
       h = patch.mesh.next(h);
-    const auto corner = patch.mesh.target(h);
-    Exact_sample s;
-    s.du = s.dv = s.duu = s.duv = s.dvv = CGAL::NULL_VECTOR;
-    s.at_extraordinary_vertex = true;
-    const auto normals = patch.mesh
-                           .template add_property_map<typename Patch_mesh::Vertex_index, Vector>(
-                             "v:cgal_subdiv_limit_normal", CGAL::NULL_VECTOR)
-                           .first;
-    // the evaluator keeps the masks of the analysis per configuration
-    const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
-    m_eigenbases->limit.limit_normals(patch.mesh, normals);
-    s.normal = normals[corner];
-    m_eigenbases->limit.project_to_limit(patch.mesh);
-    s.position = patch.mesh.point(corner);
-    return s;
+    return limits_of_vertices(patch.mesh)[patch.mesh.target(h).idx()];
+  }
+
+  /*
+   * The limit position and normal of corner i of the node's face: for a face
+   * of the mesh, from the limits of all the mesh's vertices, computed the
+   * first time (the caller holds the cache's lock), as the mesh refined once
+   * is; otherwise from its local patch.
+   */
+  Exact_sample evaluate_at_corner(Node& node, int i) const
+  {
+    if(!node.mesh_face)
+      return evaluate_at_corner(node.local_patch(), i);
+    std::vector<Exact_sample>& limits = m_cache->vertex_limits;
+    if(limits.empty()) {
+      Patch_mesh copy;
+      std::vector<std::pair<vertex_descriptor, typename Patch_mesh::Vertex_index>> vertex_copies;
+      CGAL::copy_face_graph(*m_mesh, copy,
+                            CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(vertex_copies)));
+      const std::vector<Exact_sample> by_copy = limits_of_vertices(std::move(copy));
+      limits.resize(by_copy.size());
+      for(const auto& [v, c] : vertex_copies)
+        limits[ordinal_of(v)] = by_copy[c.idx()];
+    }
+    halfedge_descriptor h = halfedge(m_numbering->face(*node.mesh_face), *m_mesh);
+    for(int k = 0; k < i; ++k)
+      h = next(h, *m_mesh);
+    return limits[ordinal_of(target(h, *m_mesh))];
   }
 
   // where a child lies in its parent's face: the sub-quad (-1: none), the
@@ -930,10 +982,10 @@ private:
       if(at->direct && evaluates_directly(*at->direct, u, v, depth))
         return {at, -1, u, v, scale};
       const int corner = corner_at(u, v);
-      if((corner >= 0 && !is_ordinary_corner(at->local_patch(), corner)) || depth >= max_depth) {
+      if((corner >= 0 && !is_ordinary_corner(*at, corner)) || depth >= max_depth) {
         const int i = corner >= 0 ? corner : nearest_corner(u, v);
         if(!at->at_corner[std::size_t(i)])
-          at->at_corner[std::size_t(i)] = evaluate_at_corner(at->local_patch(), i);
+          at->at_corner[std::size_t(i)] = evaluate_at_corner(*at, i);
         return {at, i, u, v, scale};
       }
       const Child_parameters c = child_parameters(u, v);
@@ -974,6 +1026,7 @@ private:
     std::vector<std::shared_ptr<Node>> roots;
     std::deque<std::size_t> order;
     std::unique_ptr<First_level> first_level; // kept whatever `cached_faces` is
+    std::vector<Exact_sample> vertex_limits;  // of the mesh's vertices, by ordinal (if needed)
   };
 
   /*
