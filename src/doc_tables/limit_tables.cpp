@@ -201,7 +201,7 @@ std::vector<std::string> row_cells(const Scheme_rows& s, int n, const Eigenbases
   const std::vector<Eigenvalue_group> g = groups_of(facts.eigenvalues);
   if(g.size() < 3)
     throw std::runtime_error(s.name + ": fewer than 3 distinct eigenvalues at valence " + std::to_string(n));
-  cells.push_back(std::isfinite(facts.condition) ? "Stam" : "refined (defective)");
+  cells.push_back(std::isfinite(facts.condition) ? "Stam" : "matrix powers (defective)");
   cells.push_back(significant(g[0].value, 6));
   cells.push_back(significant(g[1].value, 6));
   cells.push_back(std::to_string(g[1].multiplicity));
@@ -239,8 +239,9 @@ void write_header(std::ostringstream& md, int first, int last)
      << "patch at that corner by the K x K local subdivision matrix A, read off the mask's own refinement. "
      << "The evaluator diagonalises A = V diag(lambda) V^-1 once per valence (Eigen, in double) and evaluates "
      << "any parameter near the corner with one product. Columns: `method` is `Stam` where the eigenbasis is "
-     << "used, `regular` where the patch is a spline patch and needs none, `refined (defective)` where A is "
-     << "not diagonalisable to rounding (the evaluator then refines the patch as it does in exact kernels); "
+     << "used, `regular` where the patch is a spline patch and needs none, `matrix powers (defective)` where A "
+     << "is not diagonalisable to rounding (the evaluator then takes the child's control points through L "
+     << "products with A, no refinement); "
      << "lambda0 > lambda1 > lambda2 are the three largest distinct eigenvalues, each with its multiplicity "
      << "(the values of a defective cluster averaged); `lambda2/lambda1^2` above 1 makes the Gaussian curvature "
      << "grow without bound towards the vertex for generic control points, below 1 tend to zero (it scales as "

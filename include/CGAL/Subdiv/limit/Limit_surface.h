@@ -123,7 +123,8 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * patch, are diagonalised once per valence (cached), and a parameter at
  * any distance from the corner costs one product with the eigenbasis, no
  * refinement; where the matrix is not diagonalisable (Loop at valence 3)
- * such patches are refined as below. Any other
+ * the child's control points are taken through powers of the matrix (one
+ * K x K product per level), still with no refinement. Any other
  * face (and every face in an exact kernel) is refined (with the library's
  * own `subdivide()`, in the mesh's number type; see below for where) and
  * the child that holds (u, v) is evaluated in turn: every child away from an
@@ -210,7 +211,8 @@ public:
 
   /// the valences whose Stam eigenbasis has been built so far (by the evaluations near them), with the
   /// condition number of its eigenvector matrix: infinite where it is not used (not diagonalisable in
-  /// the reals, or too ill-conditioned), and those patches are refined instead
+  /// the reals, or too ill-conditioned), and those patches are evaluated by powers of the local
+  /// subdivision matrix instead
   std::map<std::size_t, double> eigenbasis_conditions() const
   {
     const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
@@ -635,7 +637,8 @@ private:
     return Eigenbasis(A, children);
   }
 
-  // the eigenbasis of valence n, built from the patch at h0 of `mesh` the first time; null if not usable
+  // the eigenbasis of valence n, built from the patch at h0 of `mesh` the first time (if not usable,
+  // it evaluates by powers of the local matrix)
   template <class Source>
   const Eigenbasis* eigenbasis_of(std::size_t n, const Source& mesh,
                                   typename boost::graph_traits<Source>::halfedge_descriptor h0) const
@@ -644,7 +647,7 @@ private:
     std::unique_ptr<const Eigenbasis>& slot = m_eigenbases->by_valence[n];
     if(!slot)
       slot = std::make_unique<const Eigenbasis>(build_eigenbasis(internal::local_patch<Point>(mesh, h0)));
-    return slot->usable() ? slot.get() : nullptr;
+    return slot.get();
   }
 
   /*

@@ -47,8 +47,11 @@ namespace internal {
  * loses at most about 6 of the 16 digits of a double). Measured at
  * valences 3 to 16 (test/limit_surface_test.cpp): Catmull-Clark 79 to 171
  * (valence 3), Loop 17 to 34 (valence 5); Loop at valence 3 is defective
- * (its triple eigenvalues 1/8 and 1/16), `usable()` is false and the
- * caller refines instead.
+ * (its triple eigenvalues 1/8 and 1/16), `usable()` is false, and the
+ * same limit is evaluated by powers of the matrix instead: the child's
+ * control points P_k A^L c, L products of the K x K matrix (the points
+ * taken from the extraordinary one, so that they shrink with the level and
+ * keep their relative digits), rather than L local refinements.
  */
 template <std::size_t N>
 class Stam_eigenbasis
@@ -56,7 +59,7 @@ class Stam_eigenbasis
 public:
   using Matrix = Eigen::MatrixXd;
 
-  Stam_eigenbasis(const Matrix& A, const std::array<Matrix, 3>& children)
+  Stam_eigenbasis(const Matrix& A, const std::array<Matrix, 3>& children) : m_A(A), m_raw_children(children)
   {
     const Eigen::EigenSolver<Matrix> solver(A);
     if(solver.info() != Eigen::Success)
@@ -92,9 +95,11 @@ public:
   double condition() const { return m_condition; }
   const Eigen::VectorXd& eigenvalues() const { return m_lambda; }
 
-  /// the coordinates of the control points (one per row) in the eigenbasis
+  /// the coordinates of the control points (one per row) in the eigenbasis (if usable; else the points)
   Matrix coefficients(const Matrix& control_points) const
   {
+    if(!m_usable)
+      return control_points;
     return m_inverse_vectors.lazyProduct(control_points); // (small: no blocking and packing)
   }
 
@@ -114,6 +119,8 @@ public:
     const std::array<const std::array<double, N>*, 6> rows = {&w.position, &w.du, &w.dv, &w.duu, &w.duv, &w.dvv};
     for(int r = 0; r < 6; ++r)
       basis.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(rows[std::size_t(r)]->data());
+    if(!m_usable)
+      return by_powers(basis, coefficients, k, level);
     Eigen::Matrix<double, 6, Eigen::Dynamic> eigen_weights = basis.lazyProduct(m_children[k]);
     // times lambda_i^level, and 2^level or 4^level for the derivatives (exact)
     for(Eigen::Index i = 0; i < eigen_weights.cols(); ++i)
@@ -130,6 +137,19 @@ public:
   }
 
 private:
+  // the six rows of `basis` over the child's control points P_k A^level c, the derivatives times
+  // 2^level and 4^level (where the matrix is not diagonalisable)
+  std::array<Eigen::RowVector3d, 6> by_powers(const Eigen::Matrix<double, 6, int(N)>& basis, Matrix points,
+                                              std::size_t k, int level) const
+  {
+    for(int l = 0; l < level; ++l)
+      points = m_A.lazyProduct(points).eval();
+    Eigen::Matrix<double, 6, 3> values = basis.lazyProduct(m_raw_children[k].lazyProduct(points).eval());
+    values.middleRows<2>(1) *= std::ldexp(1.0, level);
+    values.bottomRows<3>() *= std::ldexp(1.0, 2 * level);
+    return {values.row(0), values.row(1), values.row(2), values.row(3), values.row(4), values.row(5)};
+  }
+
   // x^n by squaring (std::pow costs more, and n is a small level)
   static double integer_power(double x, int n)
   {
@@ -176,7 +196,9 @@ private:
   double m_condition = std::numeric_limits<double>::infinity();
   Eigen::VectorXd m_lambda;
   Matrix m_inverse_vectors;
-  std::array<Matrix, 3> m_children;
+  std::array<Matrix, 3> m_children; // P_k V
+  Matrix m_A;                       // the local subdivision matrix, and the children's P_k
+  std::array<Matrix, 3> m_raw_children;
 };
 
 } // namespace internal
