@@ -491,13 +491,10 @@ private:
       return evaluate_at_corner(node.local_patch(), i);
     std::vector<Exact_sample>& limits = m_cache->vertex_limits;
     if(limits.empty()) {
-      Patch_mesh copy;
-      std::vector<std::pair<vertex_descriptor, typename Patch_mesh::Vertex_index>> vertex_copies;
-      CGAL::copy_face_graph(*m_mesh, copy,
-                            CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(vertex_copies)));
-      const std::vector<Exact_sample> by_copy = limits_of_vertices(std::move(copy));
+      Mesh_copy copy = copy_of_mesh();
+      const std::vector<Exact_sample> by_copy = limits_of_vertices(std::move(copy.mesh));
       limits.resize(by_copy.size());
-      for(const auto& [v, c] : vertex_copies)
+      for(const auto& [v, c] : copy.vertices)
         limits[ordinal_of(v)] = by_copy[c.idx()];
     }
     halfedge_descriptor h = halfedge(m_numbering->face(*node.mesh_face), *m_mesh);
@@ -927,14 +924,31 @@ private:
     return *level;
   }
 
+  // the mesh copied into a Patch_mesh, with the copy of each element
+  struct Mesh_copy
+  {
+    Patch_mesh mesh;
+    std::vector<std::pair<vertex_descriptor, typename Patch_mesh::Vertex_index>> vertices;
+    std::vector<std::pair<halfedge_descriptor, Patch_halfedge>> halfedges;
+    std::vector<std::pair<face_descriptor, typename Patch_mesh::Face_index>> faces;
+  };
+  Mesh_copy copy_of_mesh() const
+  {
+    Mesh_copy copy;
+    CGAL::copy_face_graph(*m_mesh, copy.mesh,
+                          CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copy.vertices))
+                            .halfedge_to_halfedge_output_iterator(std::back_inserter(copy.halfedges))
+                            .face_to_face_output_iterator(std::back_inserter(copy.faces)));
+    return copy;
+  }
+
   std::unique_ptr<First_level> refine_mesh_once() const
   {
     auto level = std::make_unique<First_level>();
-    std::vector<std::pair<halfedge_descriptor, Patch_halfedge>> halfedge_copies;
-    std::vector<std::pair<face_descriptor, typename Patch_mesh::Face_index>> face_copies;
-    CGAL::copy_face_graph(*m_mesh, level->mesh,
-                          CGAL::parameters::halfedge_to_halfedge_output_iterator(std::back_inserter(halfedge_copies))
-                            .face_to_face_output_iterator(std::back_inserter(face_copies)));
+    Mesh_copy mesh_copy = copy_of_mesh();
+    level->mesh = std::move(mesh_copy.mesh);
+    const auto& halfedge_copies = mesh_copy.halfedges;
+    const auto& face_copies = mesh_copy.faces;
     std::vector<Patch_halfedge> copy_of(halfedge_copies.size());
     for(const auto& [h, copy] : halfedge_copies)
       copy_of[ordinal_of(h)] = copy;
