@@ -842,8 +842,15 @@ private:
   std::unique_ptr<Node> make_node(const Source& mesh,
                                   typename boost::graph_traits<Source>::halfedge_descriptor h0) const
   {
+    return make_node(mesh, h0, direct_patch(mesh, h0));
+  }
+  // the same, its direct form (if any) known
+  template <class Source>
+  std::unique_ptr<Node> make_node(const Source& mesh, typename boost::graph_traits<Source>::halfedge_descriptor h0,
+                                  std::optional<Direct_patch> direct) const
+  {
     auto node = std::make_unique<Node>();
-    node->direct = direct_patch(mesh, h0);
+    node->direct = std::move(direct);
     node->make_patch = [&mesh, h0] { return internal::local_patch<Point>(mesh, h0); };
     return node;
   }
@@ -1054,6 +1061,14 @@ private:
    */
   Exact_sample evaluate_kept(const Location& at) const
   {
+    const halfedge_descriptor h = halfedge(at.face, *m_mesh);
+    std::optional<Direct_patch> direct;
+    const bool keeps_nothing = cached_faces == 0 && at.corner < 0;
+    if(keeps_nothing) { // a face that is a direct patch there is evaluated without making its node
+      direct = direct_patch(*m_mesh, h);
+      if(direct && evaluates_directly(*direct, FT(at.u), FT(at.v), 0))
+        return evaluate_direct(*direct, FT(at.u), FT(at.v));
+    }
     std::shared_ptr<Node> root;
     std::unique_lock<std::mutex> lock(m_cache->mutex);
     const std::size_t key = ordinal_of(at.face);
@@ -1062,7 +1077,7 @@ private:
     if(cached_faces > 0 && m_cache->roots[key])
       root = m_cache->roots[key];
     else {
-      root = make_node(*m_mesh, halfedge(at.face, *m_mesh));
+      root = keeps_nothing ? make_node(*m_mesh, h, std::move(direct)) : make_node(*m_mesh, h);
       if(refine_whole_mesh)
         root->mesh_face = key;
       if(cached_faces > 0) {
