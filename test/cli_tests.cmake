@@ -908,6 +908,10 @@ subdiv_cli_test(evaluate_grid_stdout ARGS evaluate ${grid} --scheme catmull-clar
 subdiv_cli_test(evaluate_grid_output ARGS evaluate ${grid} --scheme catmull-clark --at ${locations}/grid_face_5.txt
   -o @WORK@/out.txt STDOUT_REGEX "^$" OUTPUT @WORK@/out.txt POINTS 1 FILE @WORK@/out.txt FILE_REGEX "^${grid_face_5}\n$")
 
+# Loop with a border: the flat open square's limit lies in its plane, normal +z
+subdiv_cli_test(evaluate_loop_with_border ARGS evaluate ${SUBDIV_CLI_DIR}/open_square.off --scheme loop
+  --at ${locations}/one_centre.txt STDOUT_REGEX "^${near} ${near} 0 ${near} ${near} 0 ${near} ${near} 0 -?0 -?0 1\n$")
+
 # values against hand-derived ones and `surface --limit` (test/cli/limit_checks.py)
 function(subdiv_limit_check name)
   if(NOT Python3_Interpreter_FOUND)
@@ -967,8 +971,6 @@ subdiv_cli_test(evaluate_error_stdout_empty ARGS evaluate ${cube} --scheme catmu
 # meshes the evaluator refuses (exit 1) and malformed command lines (exit 2)
 subdiv_cli_error(evaluate_loop_on_quads 1 "Limit_surface: face 0 is not a triangle \\(Loop\\)"
   ARGS evaluate ${cube} --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
-subdiv_cli_error(evaluate_loop_with_border 1 "Limit_surface: the mesh has a border \\(vertex [0-9]+\\): not supported yet for Loop"
-  ARGS evaluate ${SUBDIV_CLI_DIR}/open_square.off --scheme loop --at ${locations}/one_centre.txt -o @WORK@/out.txt)
 subdiv_cli_error(evaluate_scheme_not_evaluated 2 "--scheme sqrt3: only catmull-clark and loop are evaluated so far\n$"
   ARGS evaluate ${tetra} --scheme sqrt3 --at ${locations}/one_centre.txt -o @WORK@/out.txt)
 subdiv_cli_error(evaluate_unknown_scheme 2 "unknown scheme 'cubic'"

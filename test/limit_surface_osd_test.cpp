@@ -6,7 +6,8 @@
 // positions and derivatives, and the agreement of the two faces of every edge.
 // Catmull-Clark on closed meshes with valence 3 and 5 vertices, triangles and
 // pentagons (sub-quads), a regular torus and open grids (both border-corner
-// rules); Loop on an octahedron, an icosahedron, a bipyramid and a regular torus.
+// rules); Loop on an octahedron, an icosahedron, a bipyramid, a regular torus,
+// open triangle grids (both border-corner rules) and a bipyramid with a hole.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Subdiv/limit/Limit_surface.h>
@@ -188,6 +189,15 @@ Mesh icosahedron()
         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
 }
 
+/// a bipyramid of 6 sides without one face: border vertices with 3 and 5 faces
+Mesh open_bipyramid()
+{
+  Mesh mesh = testing_utils::bipyramid<Mesh>(6);
+  CGAL::Euler::remove_face(mesh.halfedge(*mesh.faces().begin()), mesh);
+  mesh.collect_garbage();
+  return mesh;
+}
+
 /// a pentagonal prism refined once: quads only, two vertices of valence 5
 Mesh refined_prism()
 {
@@ -212,6 +222,9 @@ std::vector<Case> every_case()
     {"icosahedron", Scheme::loop, smooth, icosahedron},
     {"bipyramid", Scheme::loop, smooth, [] { return testing_utils::bipyramid<Mesh>(7); }},
     {"triangle_torus", Scheme::loop, smooth, [] { return torus(8, 6, true); }},
+    {"triangle_grid_smooth_corners", Scheme::loop, smooth, [] { return testing_utils::grid<Mesh>(5, 4, bumpy, true); }},
+    {"triangle_grid_sharp_corners", Scheme::loop, sharp, [] { return testing_utils::grid<Mesh>(5, 4, bumpy, true); }},
+    {"open_bipyramid", Scheme::loop, smooth, open_bipyramid},
   };
 }
 
@@ -606,14 +619,17 @@ TEST_P(LimitSurfaceOsd, dyadic_parameters_are_far_limit_points)
       if(border && mesh.degree(*w) == 2 && c.corners == Sd::Border_corners::smooth) {
         // a smooth corner of one face has no tangent plane (the normals around
         // it depend on the direction of approach): Far's and ours are conventions
-      } else if(border && mesh.degree(*w) > 3) {
-        // Far's tangent masks at a border vertex with 3 or more faces are not
+      } else if(border && mesh.degree(*w) > (c.scheme == Scheme::catmark ? 3u : 4u)) {
+        // Far's tangent masks at a border vertex with more faces than a
+        // regular one (2 quads, 3 triangles) are not
         // the limit's (they approach it as Far refines further: the error
         // halves with every level); ours are the analysis' eigenvectors,
         // which the limit normals of the neighbouring parameters approach
+        // (0.38 at level 1 under Loop at the apex of the open bipyramid, a
+        // border vertex with 5 faces far from flat)
         far_border.add(turn);
         border_turn[levels - 1] = (std::max)(border_turn[levels - 1], turn);
-        EXPECT_LT(turn, 1e-2) << where;
+        EXPECT_LT(turn, 0.5 / (1 << (levels - 1))) << where;
       } else {
         normals.add(turn);
         EXPECT_LT(turn, 1e-9) << where;
@@ -646,8 +662,9 @@ std::vector<int> irregular_corners(const Mesh& mesh, const Case& c, const Chart&
   const bool catmark = c.scheme == Scheme::catmark;
   const Mesh::Face_index f(static_cast<Mesh::size_type>(chart.face));
   const auto irregular = [&](Mesh::Vertex_index w) {
-    if(mesh.is_border(w)) // a sharp corner of one face makes a regular corner patch
-      return !catmark || !(mesh.degree(w) == 3 || (mesh.degree(w) == 2 && c.corners == Sd::Border_corners::sharp));
+    if(mesh.is_border(w)) // a border vertex with 2 quads (3 triangles), or a sharp corner of one quad, is regular
+      return catmark ? !(mesh.degree(w) == 3 || (mesh.degree(w) == 2 && c.corners == Sd::Border_corners::sharp))
+                     : mesh.degree(w) != 4;
     return mesh.degree(w) != (catmark ? 4u : 6u);
   };
   std::vector<Mesh::Vertex_index> corners;
@@ -703,7 +720,8 @@ struct Bfr_face
 // sub-quad, already one level down) and puts a Gregory patch there, which
 // only approximates the limit surface. So: positions, first and second
 // derivatives to 1e-12 (of the diagonal) outside those squares; inside, the
-// error is recorded, bounded loosely (1e-2 of the diagonal), and must shrink
+// error is recorded, bounded loosely (5e-2 of the diagonal: 2.5e-2 next to the
+// apex of the open bipyramid, a border vertex with 5 faces far from flat), and must shrink
 // with Bfr's approximation level 4 (a quarter of it at most).
 //
 // OpenSubdiv 3.5's Bfr returns the second derivatives of the middle
@@ -807,7 +825,7 @@ TEST_P(LimitSurfaceOsd, random_parameters_are_bfr_evaluations)
         ++near_count;
         near_position.add(position_error);
         near_normal.add(length(s.normal - unit(CGAL::cross_product(first(d, 0), first(d, 1)))));
-        EXPECT_LT(position_error, 1e-2) << where;
+        EXPECT_LT(position_error, 5e-2) << where;
         Point q;
         finer.evaluate(st, q);
         finer_position.add(std::sqrt(CGAL::squared_distance(s.position, q)) / diagonal);

@@ -189,6 +189,51 @@ TEST(LimitSurface, loop_equals_the_limit_of_refined_vertices)
   expect_limit_of_refined_vertices(mesh, 2, S::Loop_mask<Exact_mesh>());
 }
 
+// Loop with borders: a triangle with one corner or one side on the border,
+// each such corner with three faces, is a regular patch, its points beyond
+// the border extrapolated; the rest is refined until regular. A triangle
+// grid (corners of one and two faces, with both corner rules), a grid of
+// valences 4 and 8 (border vertices with two and four faces) and a
+// bipyramid with one face removed (border vertices with three and four
+// faces around the hole)
+TEST(LimitSurface, loop_equals_the_limit_of_refined_vertices_with_borders)
+{
+  testing_utils::Rationals r;
+  const auto point = [&r](int i, int j) {
+    return KE::Point_3(i + r.next<CGAL::Exact_rational>(), j + r.next<CGAL::Exact_rational>(),
+                       ((i * j) % 3) + r.next<CGAL::Exact_rational>());
+  };
+  const Exact_mesh grid = testing_utils::grid<Exact_mesh>(4, 4, point, true);
+  expect_limit_of_refined_vertices(grid, 2, S::Loop_mask<Exact_mesh>());
+  expect_limit_of_refined_vertices(grid, 2, S::Loop_mask<Exact_mesh>(S::Border_corners::sharp));
+  expect_limit_of_refined_vertices(
+    testing_utils::grid<Exact_mesh>(3, 3, point, true, testing_utils::Diagonal::alternating), 2,
+    S::Loop_mask<Exact_mesh>());
+  Exact_mesh open = testing_utils::bipyramid<Exact_mesh>(5);
+  CGAL::Euler::remove_face(open.halfedge(*open.faces().begin()), open);
+  open.collect_garbage();
+  expect_limit_of_refined_vertices(open, 2, S::Loop_mask<Exact_mesh, CGAL::Exact_rational, S::Warren_beta>());
+}
+
+// which triangles of a 4 x 4 triangle grid are regular Loop patches: all
+// but the 6 at its corners (of one and two faces) and the 2 beside its
+// corners of one face, whose two border corners do not end a border side;
+// whichever corner the walk starts from
+TEST(LimitSurface, loop_border_triangles_are_regular_patches)
+{
+  const Mesh grid = testing_utils::grid<Mesh>(
+    4, 4, [](int i, int j) { return K::Point_3(i, j, 0); }, true);
+  std::size_t regular = 0;
+  for(const auto f : grid.faces()) {
+    std::size_t starts = 0;
+    for(const auto h : CGAL::halfedges_around_face(grid.halfedge(f), grid))
+      starts += S::internal::Patch_points<Mesh, false>(grid, h).is_regular() ? 1 : 0;
+    EXPECT_TRUE(starts == 0 || starts == 3);
+    regular += starts / 3;
+  }
+  EXPECT_EQ(regular, 32u - 6u - 2u);
+}
+
 // the derivatives of the position, at parameters away from the corners (in
 // double), against central differences
 template <class Mask>
@@ -246,8 +291,6 @@ TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
   expect_refusal([&] { surface.evaluate(triangle, 0.5, 0.5); }, "face 1 has 3 corners");
   expect_refusal([&] { surface.evaluate(quad, 0, 0.5, 0.5); }, "face 0 is a quad");
   expect_refusal([&] { surface.evaluate(triangle, 3, 0.5, 0.5); }, "face 1 has no corner 3");
-  const Mesh open = testing_utils::open_fan<Mesh>(4);
-  expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> border(open); }, "has a border");
   expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(box); }, "face 0 is not a triangle");
   const Mesh triangles = testing_utils::tetrahedron<Mesh>();
   const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);

@@ -696,6 +696,43 @@ TEST(LimitNormals, parallel_tangents_fall_back_to_face_normals)
     EXPECT_EQ(m, K::Vector_3(0, 0, 0));
 }
 
+// A border vertex of one face that the mask keeps (Border_corners::sharp)
+// is a corner: its normal is its face's (the tangents along its two edges,
+// as at a tagged corner and in OpenSubdiv Far), under Loop and
+// Catmull-Clark, on a bumpy grid; the analysis finds no tangent plane there,
+// and the fallback (the face with its corners at their limits) is another
+// direction. With smooth corners the fallback stays.
+TEST(LimitNormals, kept_corners_of_one_face_have_their_face_normal)
+{
+  const auto bumpy = [](int i, int j) { return K::Point_3(i + 0.1 * j * j, j, 0.3 * std::sin(i + 2.0 * j)); };
+  const auto expect_face_normals = [](const Mesh& mesh, const auto& mask, bool kept, int expected_corners) {
+    Mesh copy = mesh;
+    const auto normals = copy.add_property_map<V, K::Vector_3>("v:n").first;
+    SD::limit_normals(copy, mask, normals);
+    int corners = 0;
+    for(V v : copy.vertices()) {
+      if(!(copy.is_border(v) && copy.degree(v) == 2))
+        continue;
+      ++corners;
+      const auto out = copy.opposite(copy.halfedge(v)); // from v, in its face (halfedge(v) is the border's)
+      const K::Vector_3 n =
+        CGAL::normal(copy.point(v), copy.point(copy.target(out)), copy.point(copy.source(copy.prev(out))));
+      const double turn = std::sqrt((normals[v] - n / std::sqrt(n.squared_length())).squared_length());
+      if(kept)
+        EXPECT_LT(turn, 1e-15);
+      else
+        EXPECT_GT(turn, 1e-3);
+    }
+    EXPECT_EQ(corners, expected_corners);
+  };
+  const Mesh triangles = testing_utils::grid<Mesh>(5, 4, bumpy, true);
+  expect_face_normals(triangles, SD::Loop_mask<Mesh>(SD::Border_corners::sharp), true, 2);
+  expect_face_normals(triangles, SD::Loop_mask<Mesh>(SD::Border_corners::smooth), false, 2);
+  const Mesh quads = testing_utils::grid<Mesh>(5, 4, bumpy, false);
+  expect_face_normals(quads, SD::Catmull_clark_mask<Mesh>(SD::Border_corners::sharp), true, 4);
+  expect_face_normals(quads, SD::Catmull_clark_mask<Mesh>(SD::Border_corners::smooth), false, 4);
+}
+
 // ------------------------------------------------------------------ displacement
 
 TEST(Displace, zero_height_is_the_limit_surface)

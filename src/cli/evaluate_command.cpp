@@ -29,9 +29,9 @@ regular patches, local refinement around extraordinary vertices).
   MESH                  OFF, OBJ, PLY or STL, read as for 'cgal-subdiv
                         surface' (a manifold polygon mesh); the surface is
                         smooth: tags (OBJ t lines) are ignored, with a note
-  --scheme SCHEME       catmull-clark (a closed mesh or one with a border) or
-                        loop (a closed triangle mesh); the other schemes are
-                        not evaluated yet
+  --scheme SCHEME       catmull-clark or loop (a triangle mesh), closed or
+                        with a border; the other schemes are not evaluated
+                        yet
   --at LOCATIONS        one location per line, '#' comments and blank lines
                         skipped, numbers separated by blanks or commas:
                           FACE U V          a quad (catmull-clark) or a
@@ -63,8 +63,7 @@ zero (the parameterisation has none there) and the normal is the limit normal
 of that vertex.
 
 Exit status: 0 on success; 1 if the input cannot be used (MESH or LOCATIONS
-unreadable, a mesh the scheme does not evaluate, e.g. loop on quads or with a
-border, a location that is not one: the error names the line of LOCATIONS);
+unreadable, a mesh the scheme does not evaluate, e.g. loop on quads, a location that is not one: the error names the line of LOCATIONS);
 2 for a malformed command line (unknown option or scheme, a scheme not
 evaluated, missing MESH, --scheme or --at). Errors are one line on stderr:
 "cgal-subdiv: error: ...", and nothing is written then.

@@ -58,7 +58,7 @@ class Limit_evaluator
 public:
   /// keeps `mesh` by reference (it must outlive the evaluator, unchanged);
   /// \throws CGAL::Subdiv::Bad_input for a mesh the evaluator refuses (Loop: a
-  ///         border, a face that is not a triangle)
+  ///         face that is not a triangle)
   Limit_evaluator(const Surface& mesh, Limit_scheme scheme);
   ~Limit_evaluator();
   Limit_evaluator(const Limit_evaluator&) = delete;

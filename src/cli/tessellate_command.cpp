@@ -34,9 +34,9 @@ it is closed when MESH is. One line on stdout sums it up: vertices (V), edges
   -o, --output OUTPUT   OFF, OBJ, PLY or STL (from the extension), ASCII, 17
                         significant digits, written under a temporary name and
                         renamed at the end
-  --scheme SCHEME       catmull-clark (a closed mesh or one with a border) or
-                        loop (a closed triangle mesh); the other schemes are
-                        not evaluated yet
+  --scheme SCHEME       catmull-clark or loop (a triangle mesh), closed or
+                        with a border; the other schemes are not evaluated
+                        yet
   --rate N              segments per edge of MESH, 1 <= N <= 1024: a quad
                         becomes N x N quads, a triangle (loop) N^2 triangles,
                         a catmull-clark face with n != 4 corners n sub-quads of
@@ -52,8 +52,8 @@ it is closed when MESH is. One line on stdout sums it up: vertices (V), edges
   -h, --help            show this help
 
 Exit status: 0 on success; 1 if the input cannot be used (MESH unreadable, a
-mesh the scheme does not evaluate, e.g. loop on quads or with a border, an
-output too large); 2 for a malformed command line (unknown option or scheme, a
+mesh the scheme does not evaluate, e.g. loop on quads, an output
+too large); 2 for a malformed command line (unknown option or scheme, a
 scheme not evaluated, missing MESH, -o, --scheme or --rate, a rate that is not
 a whole number from 1 to 1024, an extension other than .off, .obj, .ply,
 .stl, --normals with STL). Errors are one line on stderr:

@@ -123,6 +123,10 @@ public:
       const std::vector<std::size_t> smooth = sharpen(result, mesh, tags, who);
       internal::Limit_rows<FT> analysed =
         internal::limit_rows(cached, m, mesh, smooth, smooth, max_extra_levels, 0, who);
+      if constexpr(internal::Has_crease_curve<M>::value)
+        if(internal::border_corners_of(m) == Border_corners::sharp &&
+           !internal::crease_tangent_weights(m.crease_curve()).empty()) // Loop and Catmull-Clark (as sharpen())
+          internal::kept_corner_tangent_rows(analysed, smooth, mesh);
       if(smooth.size() == num_vertices(mesh))
         return analysed; // no vertex is a corner or a crease
       for(std::size_t k = 0; k < smooth.size(); ++k) {

@@ -95,9 +95,9 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * \ingroup PkgSubdivAnalysis
  * Evaluates the limit surface of a mesh under Catmull-Clark
  * (`Catmull_clark_mask`, the default, with borders and either
- * `Border_corners`) or Loop (`Loop_mask`, either beta; closed meshes only,
- * a border is refused) at any parameter of any face (the mesh's sharpness
- * tags are not read yet).
+ * `Border_corners`) or Loop (`Loop_mask`, either beta and either
+ * `Border_corners`) at any parameter of any face, closed or with borders
+ * (the mesh's sharpness tags are not read yet).
  *
  * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
  * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
@@ -115,7 +115,9 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * quartic box spline of its 12 (`box_spline_patch_weights()`). Under
  * Catmull-Clark a quad with one side on the border, or with
  * `Border_corners::sharp` two sides meeting at a corner of one face, is
- * regular too, the control points beyond the border extrapolated. In a
+ * regular too, and under Loop a triangle with one corner or one side on the
+ * border, each such corner with three faces: the control points beyond the
+ * border are extrapolated (`Patch_points`). In a
  * floating-point kernel, a patch whose one extraordinary corner is inner
  * (all its faces quads, or triangles) is evaluated by Stam's method
  * (`Stam_eigenbasis.h`): the local subdivision matrix of the patch and of
@@ -191,17 +193,13 @@ public:
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
-  /// border (not supported yet) or a face that is not a triangle
+  /// face that is not a triangle
   explicit Limit_surface(const PolygonMesh& mesh, const Mask& mask = Mask())
     : m_mesh(&mesh), m_mask(mask.template rebind<Patch_mesh, FT>()),
       m_numbering(std::make_shared<const internal::Mesh_numbering<PolygonMesh>>(mesh)),
       m_eigenbases(std::make_shared<Eigenbases>(m_mask)), m_cache(std::make_shared<Cache>())
   {
     if constexpr(!quads) {
-      for(const halfedge_descriptor h : halfedges(mesh))
-        if(CGAL::is_border(h, mesh))
-          internal::refuse(internal::Message() << "Limit_surface: the mesh has a border (vertex "
-                                               << ordinal_of(target(h, mesh)) << "): not supported yet for Loop");
       for(const face_descriptor f : faces(mesh))
         if(corners_of(f) != 3)
           internal::refuse(internal::Message()
@@ -417,8 +415,8 @@ private:
 
   /*
    * Whether corner i of the patch's face is an inner vertex of the regular
-   * valence, or under Catmull-Clark a border vertex with two faces, or a
-   * border corner of one face that the mask keeps: the children around it
+   * valence, or a border vertex with two quads (three triangles), or under
+   * Catmull-Clark a border corner of one face that the mask keeps: the children around it
    * become regular patches, which give the derivatives there too (the limit
    * masks do not).
    */
@@ -430,7 +428,7 @@ private:
     const std::size_t valence = CGAL::halfedges_around_target(h0, mesh).size();
     if(!CGAL::is_border(target(h0, mesh), mesh))
       return valence == (quads ? 4u : 6u);
-    return quads && (valence == 3 || (valence == 2 && sharp_corners()));
+    return quads ? valence == 3 || (valence == 2 && sharp_corners()) : valence == 4;
   }
   bool is_ordinary_corner(Node& node, int i) const
   {

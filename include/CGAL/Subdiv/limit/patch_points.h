@@ -63,11 +63,16 @@ public:
    * `sharp_corners` (Border_corners::sharp) a quad with two adjacent sides
    * on the border, whose common corner is a corner of one face (kept by the
    * mask: the B-spline interpolates it), their other ends having two faces
-   * and the fourth corner being inner of valence 4.
+   * and the fourth corner being inner of valence 4. Under Loop, also a
+   * triangle with one corner, or one side (its two ends), on the border,
+   * each such corner having three faces, the others being inner of valence
+   * 6 (the regular border of a triangle grid).
    */
   bool is_regular(bool sharp_corners = false) const
   {
-    const int sides = Quads ? border_sides() : 0;
+    if constexpr(!Quads)
+      return is_regular_triangle();
+    const int sides = border_sides();
     if((sides & 5) == 5 || (sides & 10) == 10 || (sides != 0 && (sides & (sides - 1)) != 0 && !sharp_corners))
       return false; // opposite sides on the border, or a corner that is not kept
     int i = 0;
@@ -202,11 +207,11 @@ public:
 
   /*
    * The 12 control points of a regular triangle, numbered as
-   * `box_spline_patch_weights()` takes them (corner 0 at 4, 1 at 5, 2 at 8).
-   * Turning around corner i from the halfedge into it in the face
-   * (opposite(next(g)) is the next halfedge into it), the sources are corner
-   * i-1, corner i+1, then four vertices of the ring: around corner 0 the
-   * points 1, 0, 3, 7, around corner 1 9, 6, 2, 1, around corner 2 7, 10, 11, 9.
+   * `box_spline_patch_weights()` takes them (corner 0 at 4, 1 at 5, 2 at 8):
+   * around corner 0 its neighbours from corner 1 on, away from the face, are
+   * 5, 1, 0, 3, 7, 8; around corner 1 8, 9, 6, 2, 1, 4; around corner 2 4,
+   * 7, 10, 11, 9, 5 (`around_corner`, which extrapolates those beyond the
+   * border).
    */
   std::array<Point, 12> triangle_control_points() const
   {
@@ -216,11 +221,9 @@ public:
     halfedge_descriptor into = h0;
     for(int i = 0; i < 3; ++i, into = next(into, m)) {
       points[corner_point[i]] = get(vpm, target(into, m));
-      halfedge_descriptor g = opposite(next(into, m), m); // from corner i+1
-      for(int k = 0; k < 4; ++k) {
-        g = opposite(next(g, m), m);
-        points[ring[i][k]] = get(vpm, source(g, m));
-      }
+      const std::array<Point, 6> around = around_corner(into);
+      for(int k = 0; k < 4; ++k)
+        points[ring[i][k]] = around[k + 1];
     }
     return points;
   }
@@ -235,6 +238,73 @@ public:
   }
 
 private:
+  /*
+   * Whether the triangle is a regular patch (`is_regular`): every corner
+   * inner of valence 6, or on the border with three faces; at most two on
+   * the border, and two only as the ends of a side on the border (two
+   * borders within the ring are not the border of a triangle grid).
+   */
+  bool is_regular_triangle() const
+  {
+    int border_corners = 0;
+    bool has_border_side = false;
+    for(const halfedge_descriptor h : CGAL::halfedges_around_face(h0, m)) {
+      const Corner_shape c = corner_shape(h);
+      if(!c.faces_regular || c.valence != (c.border ? 4u : regular_valence))
+        return false;
+      border_corners += c.border ? 1 : 0;
+      if(CGAL::is_border(opposite(h, m), m)) // the side from the previous corner to this one
+        has_border_side = true;
+    }
+    return border_corners <= 1 || (border_corners == 2 && has_border_side);
+  }
+
+  /*
+   * The six neighbours of the target c of `into` (a halfedge of the face,
+   * into its corner c) in turning order: the face's next corner, the four
+   * vertices away from the face, its previous corner. At a border vertex
+   * with three faces two of them lie beyond the border; each is
+   * extrapolated across its border edge (c, b) from the third corner q of
+   * the face on that edge, p = c + b - q (symmetric in c and b, so both
+   * ends of a border side make the same point). The box spline of the grid
+   * so extended refines as Loop's border rules do (a border vertex 3/4, 1/8,
+   * 1/8; a border edge its midpoint; an inner edge at the border its 3/8,
+   * 3/8, 1/8, 1/8), and the extrapolated points of the refined grid are
+   * those of the refined border: the side on the border is the cubic
+   * B-spline of the border points.
+   */
+  std::array<Point, 6> around_corner(halfedge_descriptor into) const
+  {
+    std::array<Point, 6> around;
+    const vertex_descriptor c = target(into, m);
+    // forward from the next corner, while the face crossed is not beyond the border
+    halfedge_descriptor g = opposite(next(into, m), m);
+    int forward = 0;
+    around[forward++] = get(vpm, source(g, m));
+    while(forward < 6 && !CGAL::is_border(g, m)) {
+      g = opposite(next(g, m), m);
+      around[forward++] = get(vpm, source(g, m));
+    }
+    if(forward == 6)
+      return around; // an inner vertex: g came back to `into`
+    // backward from the previous corner
+    int backward = 5;
+    halfedge_descriptor h = into;
+    around[backward] = get(vpm, source(h, m));
+    while(backward > forward && !CGAL::is_border(opposite(h, m), m)) {
+      h = prev(opposite(h, m), m);
+      around[--backward] = get(vpm, source(h, m));
+    }
+    // around[forward .. backward - 1] lie beyond the border (two of them at a regular border vertex)
+    const Point& centre = get(vpm, c);
+    const auto beyond = [&centre](const Point& b, const Point& q) {
+      return CGAL::ORIGIN + (((centre - CGAL::ORIGIN) + (b - CGAL::ORIGIN)) - (q - CGAL::ORIGIN));
+    };
+    around[forward] = beyond(around[forward - 1], around[(forward + 4) % 6]);
+    around[backward - 1] = beyond(around[backward], around[(backward + 1) % 6]);
+    return around;
+  }
+
   /*
    * The target of h in one walk around it (the patch tests run on every
    * evaluation): its valence, whether it is on the border, and whether

@@ -255,6 +255,28 @@ Stencil<std::uint32_t, FT> crease_cross_tangent(
 }
 
 /*
+ * The tangent rows (row `k` of `rows`) of a corner, the vertex of ordinal
+ * `self` whose edges in Far's order are `out` (`far_edge_order`): along the
+ * two edges of Far's first face, the ends of out[0] and out[1] minus the
+ * vertex (Far's corner tangent masks, up to a factor), so t0 x t1 is on the
+ * side from which the faces are counter-clockwise. None for a vertex with
+ * fewer than two edges.
+ */
+template <class FT, class Mesh>
+void corner_tangent_rows(Limit_rows<FT>& rows, std::size_t k, std::uint32_t self,
+                         const std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor>& out,
+                         const Mesh& mesh, const Mesh_numbering<Mesh>& number)
+{
+  if(out.size() < 2)
+    return;
+  for(int a = 0; a < 2; ++a) {
+    rows.tangent[a][k].add(static_cast<std::uint32_t>(number(target(out[a], mesh))), FT(1));
+    rows.tangent[a][k].add(self, FT(-1));
+  }
+  rows.has_tangents[k] = 1;
+}
+
+/*
  * The limit rows under the sharpness tags of the mesh's level (`level`), as
  * OpenSubdiv's `PrimvarRefiner::Limit` takes them, by the rule of each
  * vertex on this level: a corner's limit is the vertex itself; a crease's is
@@ -309,13 +331,7 @@ std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh
     const std::vector<halfedge_descriptor> out = far_edge_order(v, number);
     const auto end_of = [&](halfedge_descriptor h) { return static_cast<std::uint32_t>(number(target(h, mesh))); };
     if(v.rule() == Vertex_rule::corner) {
-      if(out.size() < 2)
-        continue;
-      for(int a = 0; a < 2; ++a) {
-        rows.tangent[a][k].add(end_of(out[a]), FT(1));
-        rows.tangent[a][k].add(self, FT(-1));
-      }
-      rows.has_tangents[k] = 1;
+      corner_tangent_rows(rows, k, self, out, mesh, number);
       continue;
     }
     if(along.size() != 3)
@@ -337,6 +353,27 @@ std::vector<std::size_t> sharp_limit_rows(Limit_rows<FT>& rows, const Mesh& mesh
     rows.has_tangents[k] = 1;
   }
   return smooth;
+}
+
+/*
+ * Without tags, a border vertex of one face that the mask keeps
+ * (`Border_corners::sharp`) is a corner all the same (OpenSubdiv's "edges
+ * and corners"), but the analysis finds no tangent plane there: such a
+ * vertex among `vertices` (ordinals; row p of `rows` is vertices[p]'s)
+ * without tangent rows gets a corner's (`corner_tangent_rows`), so that its
+ * normal is the limit of the normals around it, not the faces' average.
+ */
+template <class FT, class Mesh>
+void kept_corner_tangent_rows(Limit_rows<FT>& rows, const std::vector<std::size_t>& vertices, const Mesh& mesh)
+{
+  const Mesh_numbering<Mesh> number(mesh);
+  for(std::size_t p = 0; p < vertices.size(); ++p) {
+    if(rows.has_tangents[p])
+      continue;
+    const Vertex_view<Mesh> v(mesh, number.vertex(vertices[p]), Border_corners::sharp);
+    if(v.rule() == Vertex_rule::corner)
+      corner_tangent_rows(rows, p, static_cast<std::uint32_t>(vertices[p]), far_edge_order(v, number), mesh, number);
+  }
 }
 
 } // namespace internal
