@@ -249,6 +249,28 @@ TEST(Tessellate, OpenGrid)
   }
 }
 
+// Loop with a border: a 3 x 3 triangle grid (16 vertices, 33 edges, 18
+// faces, 12 border edges), n segments on each border edge
+TEST(Tessellate, OpenTriangleGrid)
+{
+  const Mesh mesh = testing_utils::grid<Mesh>(
+    3, 3, [](int i, int j) { return K::Point_3(i, j, (i * j) % 3); }, true);
+  const Loop surface(mesh);
+  const int n = 3;
+  Out out;
+  S::tessellate(surface, out, n);
+  const std::size_t m = static_cast<std::size_t>(n - 1);
+  EXPECT_EQ(out.number_of_vertices(), 16 + 33 * m + 18 * m * (m - 1) / 2);
+  EXPECT_EQ(out.number_of_faces(), 18u * n * n);
+  expect_watertight(out, false);
+  std::size_t border = 0;
+  for(const auto h : out.halfedges())
+    border += out.is_border(h);
+  EXPECT_EQ(border, 12u * n);
+  expect_evaluations(out, grid_evaluations(surface, mesh, n, true));
+  expect_limit_at_vertices(out, mesh, S::Loop_mask<Mesh>());
+}
+
 TEST(Tessellate, EdgeRates)
 {
   const auto rate = [](auto e) { return 1 + static_cast<int>(e.idx() % 3); };
