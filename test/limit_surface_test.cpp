@@ -656,6 +656,53 @@ void expect_kept_children_to_agree(const Mesh& mesh)
     }
 }
 
+// Without the second derivatives (second_derivatives = false) the position,
+// the first derivatives and the normal are bit for bit those with them, and
+// the second derivatives zero: regular patches, Stam patches (Catmull-Clark
+// valence 3 and 5, Loop valence 4 and 5), Loop's valence 3 by powers, and
+// n-gons' sub-quads refined locally
+TEST(LimitSurface, without_second_derivatives_the_rest_is_the_same)
+{
+  Mesh prism = testing_utils::prism<Mesh>(5);
+  S::catmull_clark_subdivision(prism, S::parameters::number_of_iterations(1));
+  Mesh bipyramid = testing_utils::bipyramid<Mesh>(5);
+  S::loop_subdivision(bipyramid, S::parameters::number_of_iterations(1));
+  const auto expect_same = [](const auto& with, auto without, const auto& evaluate) {
+    without.second_derivatives = false;
+    std::size_t nonzero_second = 0, evaluations = 0;
+    const Mesh& mesh = with.mesh();
+    for(const auto f : mesh.faces())
+      for(const auto& [u, v] : {std::pair{0.25, 0.125}, {1e-3, 2e-3}, {0.0, 0.0}, {0.3, 0.6}}) {
+        const S::Limit_sample a = evaluate(with, f, u, v), b = evaluate(without, f, u, v);
+        EXPECT_EQ(a.position, b.position);
+        EXPECT_EQ(a.du, b.du);
+        EXPECT_EQ(a.dv, b.dv);
+        EXPECT_EQ(a.normal, b.normal);
+        EXPECT_EQ(b.duu, S::Limit_sample::Vector(0, 0, 0));
+        EXPECT_EQ(b.duv, S::Limit_sample::Vector(0, 0, 0));
+        EXPECT_EQ(b.dvv, S::Limit_sample::Vector(0, 0, 0));
+        nonzero_second += a.duu != S::Limit_sample::Vector(0, 0, 0) ? 1 : 0;
+        ++evaluations;
+      }
+    EXPECT_GT(nonzero_second, evaluations / 2);
+  };
+  const auto quad = [](const auto& surface, Mesh::Face_index f, double u, double v) {
+    return surface.evaluate(f, u, v);
+  };
+  const S::Limit_surface<Mesh> cc(prism);
+  expect_same(cc, cc, quad);
+  const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(bipyramid);
+  expect_same(loop, loop, quad);
+  const Mesh tetrahedron = testing_utils::tetrahedron<Mesh>();
+  const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> valence_3(tetrahedron);
+  expect_same(valence_3, valence_3, quad);
+  const Mesh box = testing_utils::mixed_box<Mesh>();
+  const S::Limit_surface<Mesh> mixed(box);
+  expect_same(mixed, mixed, [](const auto& surface, Mesh::Face_index f, double u, double v) {
+    return surface.corners_of(f) == 4 ? surface.evaluate(f, u, v) : surface.evaluate(f, 1, u, v);
+  });
+}
+
 TEST(LimitSurface, kept_children_give_the_values_of_a_fresh_refinement)
 {
   expect_kept_children_to_agree<S::Catmull_clark_mask<Mesh>>(testing_utils::mixed_box<Mesh>());

@@ -55,9 +55,11 @@ std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::ve
 /// its eigenbases built outside the timer; `keep`: the surface keeps the
 /// faces' trees (`cached_faces`, default), so that after the warm-up every
 /// face is found kept; otherwise (`cached_faces = 0`) every evaluation starts
-/// from the mesh. Output points: the positions, in the order of the locations
+/// from the mesh; `second_derivatives`: `Limit_surface::second_derivatives`
+/// (Bfr is asked for P, Du and Dv only). Output points: the positions, in the
+/// order of the locations
 Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
-                              bool keep);
+                              bool keep, bool second_derivatives = false);
 /// `tessellate(surface, out, rate, output_normals(true))`, the surface made
 /// outside the timer; output points: the vertices of `out` (none if it
 /// throws `Bad_input`)

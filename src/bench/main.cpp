@@ -770,15 +770,19 @@ void limit_evaluation_rows(const Options& options)
     if(locations.empty())
       return;
     Job_ptr build[2] = {ours_limit_build(in, scheme), osd_limit_build(in.soup, scheme)};
-    // ours kept, Bfr per location, Bfr per face, ours from the mesh every time
-    Job_ptr eval[4] = {
+    // ours kept, Bfr per location, Bfr per face, ours from the mesh every time (P, Du, Dv, as Bfr), and
+    // ours from the mesh with the second derivatives too
+    Job_ptr eval[5] = {
       ours_limit_evaluation(in, scheme, locations, true), osd_limit_evaluation(in.soup, scheme, locations, false),
-      osd_limit_evaluation(in.soup, scheme, locations, true), ours_limit_evaluation(in, scheme, locations, false)};
+      osd_limit_evaluation(in.soup, scheme, locations, true), ours_limit_evaluation(in, scheme, locations, false),
+      ours_limit_evaluation(in, scheme, locations, false, true)};
     const std::vector<double> tb = time_jobs({build[0].get(), build[1].get()}, options.runs);
     const std::vector<double> te =
-      time_jobs({eval[0].get(), eval[1].get(), eval[2].get(), eval[3].get()}, options.runs);
+      time_jobs({eval[0].get(), eval[1].get(), eval[2].get(), eval[3].get(), eval[4].get()}, options.runs);
     const double n = static_cast<double>(locations.size());
-    const double ns[4] = {te[0] / n * 1e9, te[1] / n * 1e9, te[2] / n * 1e9, te[3] / n * 1e9};
+    double ns[5];
+    for(int k = 0; k < 5; ++k)
+      ns[k] = te[std::size_t(k)] / n * 1e9;
     std::size_t regular = 0;
     std::vector<bool> is_regular;
     for(const Limit_location& at : locations) {
@@ -788,7 +792,7 @@ void limit_evaluation_rows(const Options& options)
     std::string row = "| " + scheme_name(scheme) + " | " + in.name + " | " + std::to_string(in.mesh.number_of_faces()) +
                       " | " + seconds(tb[0]) + " | " + (build[1] ? seconds(tb[1]) : "-") + " | " +
                       std::to_string(locations.size()) + " | " + fixed(100.0 * static_cast<double>(regular) / n, 0) +
-                      " % | " + fixed(ns[0], 0) + " | " + fixed(ns[3], 0) + " | ";
+                      " % | " + fixed(ns[0], 0) + " | " + fixed(ns[3], 0) + " | " + fixed(ns[4], 0) + " | ";
     if(!eval[1]) {
       out(row + "- | - | - | - | | - | - |\n");
       return;
@@ -863,7 +867,8 @@ void limit_section(const Options& options)
       std::to_string(limit_location_count(options)) +
       " random (face, u, v) locations (fixed seed, the same for both), in quads only under Catmull-Clark (so no "
       "sub-quad and Bfr parameterisation of an n-gon to match) and in triangles under Loop. Ours: "
-      "`evaluate(f, u, v)`, which also makes the second derivatives and the normal; `ours kept`: the surface "
+      "`evaluate(f, u, v)` with `second_derivatives = false` (P, Du, Dv and the normal; `ours cold D2`: with the "
+      "second derivatives too, cold); `ours kept`: the surface "
       "keeps each face's tree (its direct patch, or its refined neighbourhood; `cached_faces`, the default), so "
       "after the warm-up every location finds its face kept; `ours cold`: `cached_faces = 0`, every evaluation "
       "starts from the mesh (what scattered points cost; the mesh refined once, which the evaluator keeps for "
@@ -879,9 +884,10 @@ void limit_section(const Options& options)
       "where Bfr stops refining at its approximation level (2) and puts a Gregory patch at the extraordinary "
       "corner, which only approximates the limit.\n\n"
       "| scheme | input | faces | build ours | build Bfr | locations | regular | eval ours kept ns | ours cold ns "
+      "| ours cold D2 ns "
       "| Bfr loc ns | Bfr face ns | Bfr loc/ours cold | Bfr face/ours kept | target faster than Bfr loc | dist "
       "regular | dist other |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
   limit_evaluation_rows(options);
   out(
     "\nTessellation, seconds for the whole mesh at a uniform rate (every edge cut in `rate`), the surface made "

@@ -228,11 +228,13 @@ template <class Surface>
 class Limit_evaluation_job : public Job
 {
 public:
-  Limit_evaluation_job(const Mesh& input, const std::vector<Limit_location>& locations, bool keep)
+  Limit_evaluation_job(const Mesh& input, const std::vector<Limit_location>& locations, bool keep,
+                       bool second_derivatives)
     : m_surface(input), m_locations(locations), m_points(locations.size()), m_derivatives(2 * locations.size())
   {
     if(!keep) // every evaluation starts from the mesh, as Bfr's per location does
       m_surface.cached_faces = 0;
+    m_surface.second_derivatives = second_derivatives;
   }
   void run() override
   {
@@ -323,12 +325,12 @@ std::string ours_limit_refusals(const Input& input, Scheme scheme, const std::ve
 }
 
 Job_ptr ours_limit_evaluation(const Input& input, Scheme scheme, const std::vector<Limit_location>& locations,
-                              bool keep)
+                              bool keep, bool second_derivatives)
 {
   if(scheme == Scheme::loop)
-    return std::make_unique<Limit_evaluation_job<Loop_limit>>(input.mesh, locations, keep);
+    return std::make_unique<Limit_evaluation_job<Loop_limit>>(input.mesh, locations, keep, second_derivatives);
   if(scheme == Scheme::catmull_clark)
-    return std::make_unique<Limit_evaluation_job<Cc_limit>>(input.mesh, locations, keep);
+    return std::make_unique<Limit_evaluation_job<Cc_limit>>(input.mesh, locations, keep, second_derivatives);
   return nullptr;
 }
 

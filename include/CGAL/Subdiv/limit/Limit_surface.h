@@ -190,6 +190,11 @@ public:
   /// limit position and normal of every vertex once; `false` copies and refines each such face's
   /// neighbourhood instead
   bool refine_whole_mesh = true;
+  /// whether `evaluate()` makes the second derivatives (`duu`, `duv`, `dvv`; the curvatures of
+  /// `Limit_sample` need them); `false` returns them zero and spares their weights: half the basis
+  /// functions and half the rows of Stam's products, for users who need positions and normals only
+  /// (`stencil_tables()` then has empty second-derivative rows)
+  bool second_derivatives = true;
 
   /// the evaluator of `mesh` (kept by reference: it must outlive the evaluator and stay unchanged)
   /// under the scheme of `mask` (its options kept); \throws Bad_input under Loop if `mesh` has a
@@ -368,8 +373,9 @@ private:
                                            << " (it has " << corners << ")");
   }
 
+  // the sample of a regular patch's `points` with weights `w` (the second derivatives if they are wanted)
   template <std::size_t N>
-  static Exact_sample combine(const std::array<Point, N>& points, const Patch_weights<FT, N>& w)
+  Exact_sample combine(const std::array<Point, N>& points, const Patch_weights<FT, N>& w) const
   {
     const auto sum = [&](const std::array<FT, N>& weights) {
       Vector total = CGAL::NULL_VECTOR;
@@ -381,18 +387,21 @@ private:
     s.position = CGAL::ORIGIN + sum(w.position);
     s.du = sum(w.du);
     s.dv = sum(w.dv);
+    s.duu = s.duv = s.dvv = CGAL::NULL_VECTOR;
+    if(!second_derivatives)
+      return s;
     s.duu = sum(w.duu);
     s.duv = sum(w.duv);
     s.dvv = sum(w.dvv);
     return s;
   }
 
-  static auto basis_weights(const FT& u, const FT& v)
+  auto basis_weights(const FT& u, const FT& v) const
   {
     if constexpr(quads)
-      return bspline_patch_weights(u, v);
+      return bspline_patch_weights(u, v, second_derivatives);
     else
-      return box_spline_patch_weights(u, v);
+      return box_spline_patch_weights(u, v, second_derivatives);
   }
 
   // the corner of the patch's face at (u, v), if (u, v) is a corner; -1 otherwise
@@ -783,8 +792,8 @@ private:
       const auto [s, t] = turn(u, v);
       const int level = levels_to_regular_child(s, t);
       const Child_parameters c = child_parameters(std::ldexp(s, level), std::ldexp(t, level));
-      const auto values =
-        patch.basis->evaluate(patch.coefficients, regular_child_index(c.place), level, basis_weights(c.u, c.v));
+      const auto values = patch.basis->evaluate(patch.coefficients, regular_child_index(c.place), level,
+                                                basis_weights(c.u, c.v), second_derivatives);
       const auto vector = [](const Eigen::RowVector3d& w, const FT& factor) {
         return Vector(w(0), w(1), w(2)) * factor;
       };

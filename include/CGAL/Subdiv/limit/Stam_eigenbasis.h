@@ -109,45 +109,82 @@ public:
    * of weights `w`: the position, then d/du, d/dv, d2/du2, d2/dudv, d2/dv2
    * in the child's parameters times 2^level (4^level for the second
    * derivatives), i.e. in the parameters of the patch `level` levels up
-   * (up to the child's own factor).
+   * (up to the child's own factor). Without `second_derivatives` the last
+   * three are zero, and the products have half the rows.
    */
   std::array<Eigen::RowVector3d, 6> evaluate(const Matrix& coefficients, std::size_t k, int level,
-                                             const Patch_weights<double, N>& w) const
+                                             const Patch_weights<double, N>& w, bool second_derivatives = true) const
   {
-    // the six rows of basis weights in the eigenbasis, in one product
-    Eigen::Matrix<double, 6, int(N)> basis;
+    if(second_derivatives)
+      return evaluate_rows<6>(coefficients, k, level, w);
+    return evaluate_rows<4>(coefficients, k, level, w);
+  }
+
+private:
+  /*
+   * `evaluate()` over R rows: 6 with the second derivatives; 4 without,
+   * the position and the first derivatives and a zero row, so that the
+   * products are vectorised in the same pairs of rows as with 6 (and give
+   * the same bits: 3 rows change the order of the sums)
+   */
+  template <int R>
+  std::array<Eigen::RowVector3d, 6> evaluate_rows(const Matrix& coefficients, std::size_t k, int level,
+                                                  const Patch_weights<double, N>& w) const
+  {
+    // the rows of basis weights in the eigenbasis, in one product
+    Eigen::Matrix<double, R, int(N)> basis;
     const std::array<const std::array<double, N>*, 6> rows = {&w.position, &w.du, &w.dv, &w.duu, &w.duv, &w.dvv};
-    for(int r = 0; r < 6; ++r)
-      basis.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(rows[std::size_t(r)]->data());
+    for(int r = 0; r < R; ++r)
+      if(r < 3 || R == 6)
+        basis.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, int(N)>>(rows[std::size_t(r)]->data());
+      else
+        basis.row(r).setZero();
     if(!m_usable)
-      return by_powers(basis, coefficients, k, level);
-    Eigen::Matrix<double, 6, Eigen::Dynamic> eigen_weights = basis.lazyProduct(m_children[k]);
+      return by_powers<R>(basis, coefficients, k, level);
+    Eigen::Matrix<double, R, Eigen::Dynamic> eigen_weights = basis.lazyProduct(m_children[k]);
     // times lambda_i^level, and 2^level or 4^level for the derivatives (exact)
     for(Eigen::Index i = 0; i < eigen_weights.cols(); ++i)
       eigen_weights.col(i) *= integer_power(m_lambda(i), level);
-    eigen_weights.middleRows<2>(1) *= std::ldexp(1.0, level);
-    eigen_weights.bottomRows<3>() *= std::ldexp(1.0, 2 * level);
+    scale_derivatives(eigen_weights, level);
     // the constant mode (eigenvalue 1: a translation) has no derivative; its
     // weight is a sum of derivative weights, zero but for rounding, which the
     // factor 2^level or 4^level would blow up near the corner
     if(m_constant_mode >= 0)
-      eigen_weights.col(m_constant_mode).tail<5>().setZero();
-    const Eigen::Matrix<double, 6, 3> values = eigen_weights.lazyProduct(coefficients);
-    return {values.row(0), values.row(1), values.row(2), values.row(3), values.row(4), values.row(5)};
+      eigen_weights.col(m_constant_mode).template tail<R - 1>().setZero();
+    return rows_of<R>(eigen_weights.lazyProduct(coefficients));
   }
 
-private:
-  // the six rows of `basis` over the child's control points P_k A^level c, the derivatives times
+  // the rows of `basis` over the child's control points P_k A^level c, the derivatives times
   // 2^level and 4^level (where the matrix is not diagonalisable)
-  std::array<Eigen::RowVector3d, 6> by_powers(const Eigen::Matrix<double, 6, int(N)>& basis, Matrix points,
+  template <int R>
+  std::array<Eigen::RowVector3d, 6> by_powers(const Eigen::Matrix<double, R, int(N)>& basis, Matrix points,
                                               std::size_t k, int level) const
   {
     for(int l = 0; l < level; ++l)
       points = m_A.lazyProduct(points).eval();
-    Eigen::Matrix<double, 6, 3> values = basis.lazyProduct(m_raw_children[k].lazyProduct(points).eval());
-    values.middleRows<2>(1) *= std::ldexp(1.0, level);
-    values.bottomRows<3>() *= std::ldexp(1.0, 2 * level);
-    return {values.row(0), values.row(1), values.row(2), values.row(3), values.row(4), values.row(5)};
+    Eigen::Matrix<double, R, 3> values = basis.lazyProduct(m_raw_children[k].lazyProduct(points).eval());
+    scale_derivatives(values, level);
+    return rows_of<R>(values);
+  }
+
+  // rows 1 and 2 (first derivatives) times 2^level, rows 3 to 5 (second) times 4^level
+  template <class Rows>
+  static void scale_derivatives(Rows& rows, int level)
+  {
+    rows.template middleRows<2>(1) *= std::ldexp(1.0, level);
+    if(rows.rows() > 3)
+      rows.bottomRows(rows.rows() - 3) *= std::ldexp(1.0, 2 * level);
+  }
+
+  // the rows of `values` (of R rows: the second derivatives zero if R is not 6)
+  template <int R, class Values>
+  static std::array<Eigen::RowVector3d, 6> rows_of(const Values& values)
+  {
+    const Eigen::Matrix<double, R, 3> evaluated = values;
+    std::array<Eigen::RowVector3d, 6> out;
+    for(int r = 0; r < 6; ++r)
+      out[std::size_t(r)] = r < 3 || R == 6 ? Eigen::RowVector3d(evaluated.row(r)) : Eigen::RowVector3d::Zero();
+    return out;
   }
 
   // x^n by squaring (std::pow costs more, and n is a small level)

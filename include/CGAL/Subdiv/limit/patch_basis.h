@@ -225,9 +225,11 @@ std::array<FT, 12> box_spline_derivative(const std::array<FT, 5>& pu, const std:
  * `FT` is any field type (`double`, `CGAL::Exact_rational`, ...): the weights
  * are polynomials in u and v with rational coefficients, exact in an exact
  * `FT`. Meant for 0 <= u, v <= 1 (outside, the polynomials of this piece).
+ * Without `second_derivatives` the second derivatives' weights are zero
+ * (not computed).
  */
 template <class FT>
-Patch_weights<FT, 16> bspline_patch_weights(const FT& u, const FT& v)
+Patch_weights<FT, 16> bspline_patch_weights(const FT& u, const FT& v, bool second_derivatives = true)
 {
   const internal::Cubic_bspline_basis<FT> bu(u), bv(v);
   Patch_weights<FT, 16> w;
@@ -237,6 +239,16 @@ Patch_weights<FT, 16> bspline_patch_weights(const FT& u, const FT& v)
       w.position[k] = bu.value[c] * bv.value[r];
       w.du[k] = bu.d1[c] * bv.value[r];
       w.dv[k] = bu.value[c] * bv.d1[r];
+    }
+  if(!second_derivatives) {
+    w.duu.fill(FT(0));
+    w.duv.fill(FT(0));
+    w.dvv.fill(FT(0));
+    return w;
+  }
+  for(std::size_t r = 0; r < 4; ++r)
+    for(std::size_t c = 0; c < 4; ++c) {
+      const std::size_t k = 4 * r + c;
       w.duu[k] = bu.d2[c] * bv.value[r];
       w.duv[k] = bu.d1[c] * bv.d1[r];
       w.dvv[k] = bu.value[c] * bv.d2[r];
@@ -283,16 +295,23 @@ Patch_weights<FT, 16> bspline_patch_weights(const FT& u, const FT& v)
  *
  * `FT` is any field type (`double`, `CGAL::Exact_rational`, ...): the weights
  * are polynomials in u and v with rational coefficients (denominator 12),
- * exact in an exact `FT`.
+ * exact in an exact `FT`. Without `second_derivatives` the second
+ * derivatives' weights are zero (not computed).
  */
 template <class FT>
-Patch_weights<FT, 12> box_spline_patch_weights(const FT& u, const FT& v)
+Patch_weights<FT, 12> box_spline_patch_weights(const FT& u, const FT& v, bool second_derivatives = true)
 {
   const std::array<FT, 5> pu = internal::powers_to_4(u), pv = internal::powers_to_4(v);
   Patch_weights<FT, 12> w;
   w.position = internal::box_spline_derivative(pu, pv, 0, 0);
   w.du = internal::box_spline_derivative(pu, pv, 1, 0);
   w.dv = internal::box_spline_derivative(pu, pv, 0, 1);
+  if(!second_derivatives) {
+    w.duu.fill(FT(0));
+    w.duv.fill(FT(0));
+    w.dvv.fill(FT(0));
+    return w;
+  }
   w.duu = internal::box_spline_derivative(pu, pv, 2, 0);
   w.duv = internal::box_spline_derivative(pu, pv, 1, 1);
   w.dvv = internal::box_spline_derivative(pu, pv, 0, 2);
