@@ -867,6 +867,90 @@ TEST_P(LimitSurfaceOsd, random_parameters_are_bfr_evaluations)
   }
 }
 
+// Sharpness tags: an infinitely sharp crease across a bumpy 6 x 5 grid of
+// quads, from border to border along row 2 (its vertices regular on each
+// side: Bfr's patches there are regular boundary patches, exact), given to
+// Far (creases of sharpness 10) and to ours (edge_sharpness_map). At random
+// parameters of every face away from the grid's four corners (irregular:
+// Bfr approximates there) positions and first derivatives agree to 1e-12
+// of the diagonal, on the faces along the crease too (which ours refines
+// towards the parameter until its patch has no tag).
+TEST(LimitSurfaceOsdTags, infinitely_sharp_crease_is_bfr_evaluation)
+{
+  const Mesh mesh = testing_utils::grid<Mesh>(6, 5, bumpy, false);
+  const auto vertex = [](int i, int j) { return 7 * j + i; };
+  std::vector<int> crease_ends;
+  Mesh tagged = mesh;
+  const auto sharpness = tagged.add_property_map<Mesh::Edge_index, float>("e:sharpness", 0.f).first;
+  for(int i = 0; i < 6; ++i) {
+    crease_ends.insert(crease_ends.end(), {vertex(i, 2), vertex(i + 1, 2)});
+    const auto [h, found] =
+      CGAL::halfedge(Mesh::Vertex_index(vertex(i, 2)), Mesh::Vertex_index(vertex(i + 1, 2)), tagged);
+    ASSERT_TRUE(found);
+    sharpness[tagged.edge(h)] = 10.f;
+  }
+  const Sd::Limit_surface<Mesh, Cc_mask> surface(tagged, Cc_mask(), Sd::parameters::edge_sharpness_map(sharpness));
+
+  std::vector<int> sizes, indices;
+  for(const Mesh::Face_index f : faces(tagged)) {
+    sizes.push_back(static_cast<int>(tagged.degree(f)));
+    for(const Mesh::Halfedge_index h : CGAL::halfedges_around_face(tagged.halfedge(f), tagged))
+      indices.push_back(static_cast<int>(tagged.target(h)));
+  }
+  const std::vector<float> weights(6, 10.f);
+  Far::TopologyDescriptor descriptor;
+  descriptor.numVertices = static_cast<int>(tagged.number_of_vertices());
+  descriptor.numFaces = static_cast<int>(sizes.size());
+  descriptor.numVertsPerFace = sizes.data();
+  descriptor.vertIndicesPerFace = indices.data();
+  descriptor.numCreases = 6;
+  descriptor.creaseVertexIndexPairs = crease_ends.data();
+  descriptor.creaseWeights = weights.data();
+  OpenSubdiv::Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  const std::unique_ptr<Far::TopologyRefiner> refiner(
+    Factory::Create(descriptor, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, options)));
+  ASSERT_TRUE(refiner != nullptr);
+  const Bfr::RefinerSurfaceFactory<> factory(*refiner);
+  std::vector<double> mesh_points;
+  for(const Osd_vertex& p : far_points(tagged))
+    mesh_points.insert(mesh_points.end(), p.p, p.p + 3);
+
+  const double diagonal = diagonal_of(tagged);
+  Maximum position("bfr_crease_position_error"), derivative("bfr_crease_derivative_error");
+  std::mt19937 random(4321);
+  std::uniform_real_distribution<double> anywhere(0, 1);
+  int compared = 0, along_crease = 0;
+  for(const Mesh::Face_index f : faces(tagged)) {
+    bool at_grid_corner = false, on_crease = false;
+    for(const Mesh::Vertex_index w : CGAL::vertices_around_face(tagged.halfedge(f), tagged)) {
+      at_grid_corner = at_grid_corner || tagged.degree(w) == 2;
+      on_crease = on_crease || std::find(crease_ends.begin(), crease_ends.end(), int(w)) != crease_ends.end();
+    }
+    if(at_grid_corner)
+      continue;
+    Bfr_face bfr;
+    ASSERT_TRUE(bfr.init(factory, int(f), mesh_points));
+    for(int k = 0; k < 20; ++k) {
+      const double u = anywhere(random), v = anywhere(random);
+      const Sd::Limit_sample s = surface.evaluate(f, u, v);
+      Point p;
+      const std::array<Vector, 6> d = bfr.evaluate({u, v}, p);
+      const double e = std::sqrt(CGAL::squared_distance(s.position, p)) / diagonal;
+      const double de = (std::max)(length(s.du - d[0]), length(s.dv - d[1])) / diagonal;
+      position.add(e);
+      derivative.add(de);
+      EXPECT_LT(e, 1e-12) << "face " << f << " at " << u << ", " << v;
+      EXPECT_LT(de, 1e-12) << "face " << f << " at " << u << ", " << v;
+      ++compared;
+      along_crease += on_crease ? 1 : 0;
+    }
+  }
+  EXPECT_GT(along_crease, 200);
+  EXPECT_GT(compared, along_crease);
+}
+
 #else
 TEST(LimitSurfaceOsdDependencies, opensubdiv_is_installed)
 {

@@ -234,6 +234,110 @@ TEST(LimitSurface, loop_border_triangles_are_regular_patches)
   EXPECT_EQ(regular, 32u - 6u - 2u);
 }
 
+/*
+ * With sharpness tags: every vertex of `base` refined `levels` levels, with
+ * the tags decaying, sits at a parameter of a base face; there the
+ * evaluator (given the same tags) is the exact limit of that vertex under
+ * the tags of its level (project_to_limit with the refined maps), bit for
+ * bit, and its normal the limit normal's direction at the vertices without
+ * an infinitely sharp tag (at a crease vertex the limit has a tangent
+ * plane per side). The tags must have decayed to 0 or be infinite at
+ * `levels` (a semi-sharp value left would make the refined mesh's rule
+ * OpenSubdiv's approximation, not the limit).
+ */
+template <class Mask>
+void expect_tagged_limit_of_refined_vertices(const Exact_mesh& mesh, int levels, const Mask& mask,
+                                             const std::vector<std::pair<std::array<int, 2>, int>>& edges,
+                                             const std::vector<std::pair<int, int>>& vertices)
+{
+  using Q = CGAL::Exact_rational;
+  Exact_mesh base = mesh;
+  const auto base_edges = base.add_property_map<Exact_mesh::Edge_index, Q>("e:sharpness", Q(0)).first;
+  const auto base_vertices = base.add_property_map<Exact_mesh::Vertex_index, Q>("v:sharpness", Q(0)).first;
+  for(const auto& [ends, sharpness] : edges) {
+    const auto [h, found] = CGAL::halfedge(Exact_mesh::Vertex_index(ends[0]), Exact_mesh::Vertex_index(ends[1]), base);
+    ASSERT_TRUE(found);
+    base_edges[base.edge(h)] = Q(sharpness) / Q(2); // halves: semi-sharp 1/2, 3/2, ...; 20 is infinite
+  }
+  for(const auto& [v, sharpness] : vertices)
+    base_vertices[Exact_mesh::Vertex_index(v)] = Q(sharpness) / Q(2);
+  const auto tags = [](Exact_mesh& m) {
+    return S::parameters::edge_sharpness_map(m.property_map<Exact_mesh::Edge_index, Q>("e:sharpness").first)
+      .vertex_sharpness_map(m.property_map<Exact_mesh::Vertex_index, Q>("v:sharpness").first);
+  };
+  const S::Limit_surface<Exact_mesh, Mask> surface(base, mask, tags(base));
+  Exact_mesh refined = base; // (with its maps)
+  const auto origin = refined.add_property_map<Exact_mesh::Face_index, S::Face_origin>("f:origin").first;
+  S::Carried_data<Exact_mesh> data;
+  data.face_origin_map(origin);
+  S::subdivide(refined, mask, tags(refined).number_of_iterations(levels).carried_data(data));
+  const auto normal = refined.add_property_map<Exact_mesh::Vertex_index, KE::Vector_3>("v:normal").first;
+  S::limit_normals(refined, mask, normal, tags(refined));
+  Exact_mesh limit = refined;
+  S::project_to_limit(limit, mask, tags(limit));
+  const auto refined_edges = refined.property_map<Exact_mesh::Edge_index, Q>("e:sharpness").first;
+  const auto refined_vertices = refined.property_map<Exact_mesh::Vertex_index, Q>("v:sharpness").first;
+  const auto infinitely_sharp = [&](Exact_mesh::Vertex_index v) {
+    if(refined_vertices[v] >= Q(10))
+      return true;
+    for(const auto h : CGAL::halfedges_around_target(v, refined))
+      if(refined_edges[refined.edge(h)] >= Q(10))
+        return true;
+    return false;
+  };
+  for(const auto e : refined.edges()) // decayed to 0 or infinite
+    ASSERT_TRUE(refined_edges[e] == Q(0) || refined_edges[e] >= Q(10));
+  std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
+  std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done;
+  std::size_t checked = 0, sharp = 0;
+  for(const auto f : refined.faces()) {
+    const S::Face_origin& o = origin[f];
+    int i = 0;
+    for(const auto h : CGAL::halfedges_around_face(refined.halfedge(f), refined)) {
+      const auto v = refined.target(h);
+      const auto [u, w] = std::make_pair(o.uv[i][0], o.uv[i][1]);
+      ++i;
+      if(!done.emplace(std::make_pair(o.face, v), true).second)
+        continue;
+      SCOPED_TRACE("base face " + std::to_string(o.face) + " (u, v) = (" + std::to_string(u) + ", " +
+                   std::to_string(w) + ")");
+      const S::Limit_sample s = surface.evaluate(base_faces[o.face], u, w);
+      EXPECT_EQ(s.position, to_double(limit.point(v)));
+      if(infinitely_sharp(v)) {
+        ++sharp;
+      } else if(!(refined.is_border(v) && refined.degree(v) == 2)) {
+        EXPECT_NEAR((s.normal - unit(normal[v])).squared_length(), 0, 1e-24);
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(sharp, 0u);
+  EXPECT_GT(checked, refined.number_of_vertices());
+}
+
+// Catmull-Clark and Loop with tags: an infinitely sharp crease (three
+// edges) from the border (a corner there: the border edges are sharp) to a
+// corner vertex, a semi-sharp edge of 1 (it decays over one level) and one
+// of 3/2, on a bumpy 4 x 4 grid of quads and of triangles (vertex 5 j + i
+// at (i, j)), refined two levels. (No dart: its limit masks are
+// OpenSubdiv's smooth ones, not its limit, which the evaluator approaches
+// by refining.)
+TEST(LimitSurface, tags_equal_the_limit_of_refined_vertices)
+{
+  testing_utils::Rationals r;
+  const auto point = [&r](int i, int j) {
+    return KE::Point_3(i + r.next<CGAL::Exact_rational>(), j + r.next<CGAL::Exact_rational>(),
+                       ((i * j) % 3) + r.next<CGAL::Exact_rational>());
+  };
+  const std::vector<std::pair<std::array<int, 2>, int>> edges = {
+    {{5, 6}, 20}, {{6, 7}, 20}, {{7, 8}, 20}, {{16, 17}, 2}, {{11, 12}, 3}};
+  const std::vector<std::pair<int, int>> vertices = {{8, 20}};
+  const Exact_mesh quads = testing_utils::grid<Exact_mesh>(4, 4, point, false);
+  expect_tagged_limit_of_refined_vertices(quads, 2, S::Catmull_clark_mask<Exact_mesh>(), edges, vertices);
+  const Exact_mesh triangles = testing_utils::grid<Exact_mesh>(4, 4, point, true);
+  expect_tagged_limit_of_refined_vertices(triangles, 2, S::Loop_mask<Exact_mesh>(), edges, vertices);
+}
+
 // the derivatives of the position, at parameters away from the corners (in
 // double), against central differences
 template <class Mask>

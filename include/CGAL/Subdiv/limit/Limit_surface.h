@@ -24,6 +24,8 @@
 #include <CGAL/Subdiv/masks/Loop_mask.h>
 #include <CGAL/Subdiv/stencils/Stencil_table.h>
 #include <CGAL/Subdiv/subdivide.h>
+#include <CGAL/Subdiv/views/Sharpness.h>
+#include <CGAL/Subdiv/views/Sharpness_tags.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -96,8 +98,9 @@ struct Patch_scheme<Loop_mask<Mesh, FT, Beta, Tagged>>
  * Evaluates the limit surface of a mesh under Catmull-Clark
  * (`Catmull_clark_mask`, the default, with borders and either
  * `Border_corners`) or Loop (`Loop_mask`, either beta and either
- * `Border_corners`) at any parameter of any face, closed or with borders
- * (the mesh's sharpness tags are not read yet).
+ * `Border_corners`) at any parameter of any face, closed or with borders,
+ * with OpenSubdiv's sharpness tags if given (the constructor with named
+ * parameters).
  *
  * Parameters (doc/provenance.md, "Faces"): a quad has corner 0 (the target
  * of `halfedge(f)`) at (0,0), corner 1 at (1,0), corner 2 at (1,1) and
@@ -174,6 +177,11 @@ class Limit_surface
   // the local patches: a face and its 1-ring, refined level by level
   using Patch_mesh = CGAL::Surface_mesh<Point>;
   using Patch_halfedge = typename Patch_mesh::Halfedge_index;
+  // sharpness tags: by ordinal for the mesh, in property maps of the local meshes (refined with them)
+  using Sharpness = internal::Sharpness_number<FT>;
+  using Crease_rules = internal::Crease_rules<Sharpness>;
+  using Edge_sharpness_map = typename Patch_mesh::template Property_map<typename Patch_mesh::Edge_index, Sharpness>;
+  using Vertex_sharpness_map = typename Patch_mesh::template Property_map<typename Patch_mesh::Vertex_index, Sharpness>;
 
 public:
   /// levels of local refinement at most before a parameter is taken at its extraordinary corner
@@ -209,6 +217,48 @@ public:
         if(corners_of(f) != 3)
           internal::refuse(internal::Message()
                            << "Limit_surface: face " << ordinal_of(f) << " is not a triangle (Loop)");
+    }
+  }
+
+  /*!
+   * The same with the sharpness tags of `np` (`edge_sharpness_map`,
+   * `vertex_sharpness_map`, `crease_method`), read once (the maps must not
+   * change meanwhile either): OpenSubdiv's semantics, as `subdivide()`
+   * refines them. A patch with a tag at a corner or on an edge at a corner
+   * is refined (with the tags, decaying) until it has none; a parameter at
+   * a vertex with an infinitely sharp tag (a crease or corner vertex) takes
+   * the limit masks of its rule there (`project_to_limit()`,
+   * `limit_normals()`, with the tags). A parameter on an infinitely sharp
+   * crease edge never reaches a patch without tags: it is evaluated at the
+   * nearest vertex `max_depth` levels down (its position to about 2^-60 of
+   * the face's size, its derivatives zero). \throws Bad_input for the tags
+   * `subdivide()` refuses (negative, NaN), and for the Chaikin crease method
+   * (not supported yet: its decay reads the edges around both ends, which
+   * a local patch does not have)
+   */
+  template <class NamedParameters>
+  Limit_surface(const PolygonMesh& mesh, const Mask& mask, const NamedParameters& np) : Limit_surface(mesh, mask)
+  {
+    const auto tags = internal::sharpness_tags_of<PolygonMesh, FT>(np);
+    if constexpr(!std::is_same<std::decay_t<decltype(tags)>, internal::No_sharpness_tags>::value) {
+      tags.check(mesh, mask, "Limit_surface");
+      if(tags.method() != Crease_method::uniform)
+        internal::refuse(internal::Message()
+                         << "Limit_surface: the Chaikin crease method is not supported yet (uniform only)");
+      auto by_ordinal = std::make_shared<internal::Sharpness_by_ordinal<FT>>();
+      bool any = false;
+      const auto edge_sharpness = tags.edge_reader();
+      const auto vertex_sharpness = tags.vertex_reader();
+      for(std::size_t e = 0; e < num_edges(mesh); ++e) {
+        by_ordinal->edges.push_back(Sharpness(edge_sharpness(m_numbering->edge(e))));
+        any = any || Crease_rules::is_sharp(by_ordinal->edges.back());
+      }
+      for(std::size_t v = 0; v < num_vertices(mesh); ++v) {
+        by_ordinal->vertices.push_back(Sharpness(vertex_sharpness(m_numbering->vertex(v))));
+        any = any || Crease_rules::is_sharp(by_ordinal->vertices.back());
+      }
+      if(any)
+        m_tags = std::make_shared<const Tags>(Tags{std::move(by_ordinal), m_numbering, &mesh});
     }
   }
 
@@ -300,7 +350,7 @@ public:
     std::array<std::vector<std::pair<std::size_t, FT>>, 6> rows;
     for(const Location& at : locations) {
       std::vector<vertex_descriptor> patch_sources;
-      const Patch patch = internal::local_patch<Point>(*m_mesh, halfedge(at.face, *m_mesh), &patch_sources);
+      const Patch patch = local_patch_of(m_tags, *m_mesh, halfedge(at.face, *m_mesh), &patch_sources);
       for(auto& row : rows)
         row.clear();
       for(std::size_t first = 0; first < patch_sources.size(); first += 3) {
@@ -329,6 +379,140 @@ public:
 private:
   using Eigenbasis = internal::Stam_eigenbasis<quads ? 16 : 12>;
   using Patch = internal::Local_patch<Point>;
+
+  /*
+   * The sharpness tags, if any: of the mesh by ordinal, of a local mesh in
+   * its property maps (copied from the mesh, then refined by `subdivide()`
+   * with them). Shared by the evaluator's copies and its nodes.
+   */
+  struct Tags
+  {
+    std::shared_ptr<const internal::Sharpness_by_ordinal<FT>> mesh_sharpness;
+    std::shared_ptr<const internal::Mesh_numbering<PolygonMesh>> numbering;
+    const PolygonMesh* mesh;
+
+    static constexpr const char* edge_name = "e:cgal_subdiv_limit_sharpness";
+    static constexpr const char* vertex_name = "v:cgal_subdiv_limit_sharpness";
+
+    // the maps of a local mesh (none if it was made without tags)
+    static std::optional<std::pair<Edge_sharpness_map, Vertex_sharpness_map>> maps(const Patch_mesh& mesh)
+    {
+      const auto e = mesh.template property_map<typename Patch_mesh::Edge_index, Sharpness>(edge_name);
+      const auto v = mesh.template property_map<typename Patch_mesh::Vertex_index, Sharpness>(vertex_name);
+      if(!e.second || !v.second)
+        return std::nullopt;
+      return std::make_pair(e.first, v.first);
+    }
+    static std::pair<Edge_sharpness_map, Vertex_sharpness_map> add_maps(Patch_mesh& mesh)
+    {
+      return {
+        mesh.template add_property_map<typename Patch_mesh::Edge_index, Sharpness>(edge_name, Sharpness(0)).first,
+        mesh.template add_property_map<typename Patch_mesh::Vertex_index, Sharpness>(vertex_name, Sharpness(0)).first};
+    }
+
+    template <class Source>
+    Sharpness of_edge(const Source& m, typename boost::graph_traits<Source>::edge_descriptor e) const
+    {
+      if constexpr(std::is_same<Source, PolygonMesh>::value)
+        if(&m == mesh)
+          return mesh_sharpness->edges[(*numbering)(e)];
+      if constexpr(std::is_same<Source, Patch_mesh>::value)
+        if(const auto found = maps(m))
+          return found->first[e];
+      return Sharpness(0);
+    }
+    template <class Source>
+    Sharpness of_vertex(const Source& m, typename boost::graph_traits<Source>::vertex_descriptor v) const
+    {
+      if constexpr(std::is_same<Source, PolygonMesh>::value)
+        if(&m == mesh)
+          return mesh_sharpness->vertices[(*numbering)(v)];
+      if constexpr(std::is_same<Source, Patch_mesh>::value)
+        if(const auto found = maps(m))
+          return found->second[v];
+      return Sharpness(0);
+    }
+
+    /*
+     * What the tags make of the target of `h`: `smooth` (no tag at it nor on
+     * an edge at it); `sharp` if its rule stays and its limit masks are exact
+     * (an infinitely sharp vertex, or two or more infinitely sharp edges,
+     * border edges counted: a crease or a corner); `decaying` otherwise,
+     * where refining towards it is the way to its limit: a semi-sharp tag
+     * (which decays), or a dart (one sharp edge: OpenSubdiv's smooth masks
+     * there are not its limit, and it stays a dart), approached until the
+     * parameter is reached or `max_depth`.
+     */
+    enum class Corner { smooth, decaying, sharp };
+    template <class Source>
+    Corner at_corner(const Source& m, typename boost::graph_traits<Source>::halfedge_descriptor h) const
+    {
+      const Sharpness at = of_vertex(m, target(h, m));
+      if(Crease_rules::is_semi_sharp(at))
+        return Corner::decaying;
+      int sharp_edges = 0, tagged = 0;
+      for(const auto g : CGAL::halfedges_around_target(h, m)) {
+        if(CGAL::is_border(edge(g, m), m)) {
+          ++sharp_edges;
+          continue;
+        }
+        const Sharpness s = of_edge(m, edge(g, m));
+        if(Crease_rules::is_semi_sharp(s))
+          return Corner::decaying;
+        if(Crease_rules::is_infinite(s)) {
+          ++sharp_edges;
+          ++tagged;
+        }
+      }
+      if(Crease_rules::is_infinite(at))
+        return Corner::sharp;
+      if(tagged == 0)
+        return Corner::smooth;
+      return sharp_edges >= 2 ? Corner::sharp : Corner::decaying;
+    }
+
+    // whether a corner of the face at h0 has a tag at it or on an edge at it
+    template <class Source>
+    bool at_corners(const Source& m, typename boost::graph_traits<Source>::halfedge_descriptor h0) const
+    {
+      for(const auto h : CGAL::halfedges_around_face(h0, m))
+        if(at_corner(m, h) != Corner::smooth)
+          return true;
+      return false;
+    }
+
+    // the tags of `source` copied into `patch`, a local patch of it whose vertex j is `sources[j]`
+    template <class Source>
+    void copy_into(const Source& source,
+                   const std::vector<typename boost::graph_traits<Source>::vertex_descriptor>& sources,
+                   Patch_mesh& patch) const
+    {
+      const auto [edges, vertices] = add_maps(patch);
+      for(const auto v : patch.vertices())
+        vertices[v] = of_vertex(source, sources[v.idx()]);
+      for(const auto e : patch.edges()) {
+        const auto h = patch.halfedge(e);
+        const auto [g, found] = CGAL::halfedge(sources[patch.source(h).idx()], sources[patch.target(h).idx()], source);
+        edges[e] = found ? of_edge(source, edge(g, source)) : Sharpness(0);
+      }
+    }
+  };
+
+  // the local patch of the face at h0 of `mesh` (`internal::local_patch`), with the tags if any
+  template <class Source>
+  static Patch local_patch_of(const std::shared_ptr<const Tags>& tags, const Source& mesh,
+                              typename boost::graph_traits<Source>::halfedge_descriptor h0,
+                              std::vector<typename boost::graph_traits<Source>::vertex_descriptor>* sources = nullptr)
+  {
+    if(!tags)
+      return internal::local_patch<Point>(mesh, h0, sources);
+    std::vector<typename boost::graph_traits<Source>::vertex_descriptor> own;
+    auto& copied = sources != nullptr ? *sources : own;
+    Patch patch = internal::local_patch<Point>(mesh, h0, &copied);
+    tags->copy_into(mesh, copied, patch.mesh);
+    return patch;
+  }
+
   struct Node; // a face, or a child of one, on the way down to a parameter (below)
   // the position and derivatives, in the mesh's number type
   struct Exact_sample
@@ -434,6 +618,11 @@ private:
   {
     for(int k = 0; k < i; ++k)
       h0 = next(h0, mesh);
+    if(m_tags) {
+      const auto tags = m_tags->at_corner(mesh, h0);
+      if(tags != Tags::Corner::smooth) // a decaying tag is refined away, an infinitely sharp one stays
+        return tags == Tags::Corner::decaying;
+    }
     const std::size_t valence = CGAL::halfedges_around_target(h0, mesh).size();
     if(!CGAL::is_border(target(h0, mesh), mesh))
       return valence == (quads ? 4u : 6u);
@@ -467,8 +656,14 @@ private:
     {
       // the evaluator keeps the masks of the analysis per configuration
       const std::lock_guard<std::mutex> lock(m_eigenbases->mutex);
-      m_eigenbases->limit.limit_normals(mesh, normals);
-      m_eigenbases->limit.project_to_limit(mesh);
+      if(const auto tags = Tags::maps(mesh)) { // the rules of the tags at this level
+        const auto np = parameters::edge_sharpness_map(tags->first).vertex_sharpness_map(tags->second);
+        m_eigenbases->limit.limit_normals(mesh, normals, np);
+        m_eigenbases->limit.project_to_limit(mesh, np);
+      } else {
+        m_eigenbases->limit.limit_normals(mesh, normals);
+        m_eigenbases->limit.project_to_limit(mesh);
+      }
     }
     std::vector<Exact_sample> limits;
     limits.reserve(mesh.number_of_vertices());
@@ -526,7 +721,11 @@ private:
       mesh.template add_property_map<typename Patch_mesh::Face_index, Face_origin>("f:cgal_subdiv_limit_origin").first;
     Carried_data<Patch_mesh, FT> data;
     data.face_origin_map(origins);
-    subdivide(mesh, m_mask, parameters::carried_data(data));
+    if(const auto tags = Tags::maps(mesh)) // the children's tags decay into the same maps
+      subdivide(mesh, m_mask,
+                parameters::carried_data(data).edge_sharpness_map(tags->first).vertex_sharpness_map(tags->second));
+    else
+      subdivide(mesh, m_mask, parameters::carried_data(data));
     return origins;
   }
 
@@ -675,6 +874,8 @@ private:
   std::optional<Direct_patch> direct_patch(const Source& mesh,
                                            typename boost::graph_traits<Source>::halfedge_descriptor h0) const
   {
+    if(m_tags && m_tags->at_corners(mesh, h0))
+      return std::nullopt; // refined until the tags at its corners have decayed (or for ever: a crease)
     const internal::Patch_points<Source, quads> patch(mesh, h0);
     if(patch.is_regular(sharp_corners())) {
       Direct_patch direct;
@@ -858,7 +1059,7 @@ private:
   {
     auto node = std::make_unique<Node>();
     node->direct = std::move(direct);
-    node->make_patch = [&mesh, h0] { return internal::local_patch<Point>(mesh, h0); };
+    node->make_patch = [&mesh, h0, tags = m_tags] { return local_patch_of(tags, mesh, h0); };
     return node;
   }
 
@@ -953,6 +1154,13 @@ private:
                           CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copy.vertices))
                             .halfedge_to_halfedge_output_iterator(std::back_inserter(copy.halfedges))
                             .face_to_face_output_iterator(std::back_inserter(copy.faces)));
+    if(m_tags) {
+      const auto [edges, vertices] = Tags::add_maps(copy.mesh);
+      for(const auto& [v, w] : copy.vertices)
+        vertices[w] = m_tags->of_vertex(*m_mesh, v);
+      for(const auto& [h, g] : copy.halfedges)
+        edges[copy.mesh.edge(g)] = m_tags->of_edge(*m_mesh, edge(h, *m_mesh));
+    }
     return copy;
   }
 
@@ -1141,6 +1349,7 @@ private:
   std::shared_ptr<const internal::Mesh_numbering<PolygonMesh>> m_numbering;
   std::shared_ptr<Eigenbases> m_eigenbases;
   std::shared_ptr<Cache> m_cache;
+  std::shared_ptr<const Tags> m_tags; // none without sharpness tags
 };
 
 } // namespace Subdiv
