@@ -69,6 +69,49 @@ S::Limit_sample::Vector unit(const KE::Vector_3& n)
 }
 
 /*
+ * Every vertex v of `refined` (`base` refined, the face origins in
+ * `origin`) at its parameter in each base face it lies in: there the
+ * evaluator's position is `limit`'s point of v converted to double, bit for
+ * bit, and, where `compare_normal(v)`, its normal the direction of
+ * normal[v]. Returns the vertices checked, once per base face they lie in.
+ */
+template <class Mask, class Surface, class CompareNormal>
+std::vector<Exact_mesh::Vertex_index> expect_limits_at_parameters(
+  const Surface& surface, const Exact_mesh& base, const Exact_mesh& refined,
+  const Exact_mesh::Property_map<Exact_mesh::Face_index, S::Face_origin>& origin, const Exact_mesh& limit,
+  const Exact_mesh::Property_map<Exact_mesh::Vertex_index, KE::Vector_3>& normal, const CompareNormal& compare_normal)
+{
+  const std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
+  std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done; // (base face, vertex)
+  std::vector<Exact_mesh::Vertex_index> checked;
+  for(const auto f : refined.faces()) {
+    const S::Face_origin& o = origin[f];
+    int i = 0;
+    for(const auto h : CGAL::halfedges_around_face(refined.halfedge(f), refined)) {
+      const auto v = refined.target(h);
+      const auto [u, w] = std::make_pair(o.uv[i][0], o.uv[i][1]);
+      ++i;
+      if(!done.emplace(std::make_pair(o.face, v), true).second)
+        continue;
+      SCOPED_TRACE("base face " + std::to_string(o.face) + " sub-quad " + std::to_string(o.sub_quad) + " (u, v) = (" +
+                   std::to_string(u) + ", " + std::to_string(w) + ")");
+      S::Limit_sample s;
+      if constexpr(std::is_same<Mask, S::Catmull_clark_mask<Exact_mesh>>::value)
+        s = o.sub_quad < 0 ? surface.evaluate(base_faces[o.face], u, w)
+                           : surface.evaluate(base_faces[o.face], o.sub_quad, u, w);
+      else
+        s = surface.evaluate(base_faces[o.face], u, w);
+      EXPECT_EQ(s.position, to_double(limit.point(v)));
+      if(compare_normal(v)) {
+        EXPECT_NEAR((s.normal - unit(normal[v])).squared_length(), 0, 1e-24);
+      }
+      checked.push_back(v);
+    }
+  }
+  return checked;
+}
+
+/*
  * Every vertex of `base` refined `levels` levels sits at a parameter of the
  * base faces around it (face_origin_map): there the evaluator's position is
  * the exact limit of that vertex (project_to_limit), converted to double,
@@ -92,39 +135,16 @@ void expect_limit_of_refined_vertices(const Exact_mesh& base, int levels, const 
   Exact_mesh limit = refined;
   S::project_to_limit(limit, mask);
 
-  std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
-  std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done; // (base face, vertex)
-  std::size_t checked = 0, extraordinary = 0;
-  for(const auto f : refined.faces()) {
-    const S::Face_origin& o = origin[f];
-    int i = 0;
-    for(const auto h : CGAL::halfedges_around_face(refined.halfedge(f), refined)) {
-      const auto v = refined.target(h);
-      const auto [u, w] = std::make_pair(o.uv[i][0], o.uv[i][1]);
-      ++i;
-      if(!done.emplace(std::make_pair(o.face, v), true).second)
-        continue;
-      SCOPED_TRACE("base face " + std::to_string(o.face) + " sub-quad " + std::to_string(o.sub_quad) + " (u, v) = (" +
-                   std::to_string(u) + ", " + std::to_string(w) + ")");
-      S::Limit_sample s;
-      if constexpr(std::is_same<Mask, S::Catmull_clark_mask<Exact_mesh>>::value)
-        s = o.sub_quad < 0 ? surface.evaluate(base_faces[o.face], u, w)
-                           : surface.evaluate(base_faces[o.face], o.sub_quad, u, w);
-      else
-        s = surface.evaluate(base_faces[o.face], u, w);
-      EXPECT_EQ(s.position, to_double(limit.point(v)));
-      // (at a corner with one face the analysis finds no C1 tangent plane,
-      // and limit_normals averages the faces around, which depends on the level)
-      if(!(refined.is_border(v) && refined.degree(v) == 2)) {
-        const S::Limit_sample::Vector expected = unit(normal[v]);
-        EXPECT_NEAR((s.normal - expected).squared_length(), 0, 1e-24);
-      }
-      extraordinary += refined.degree(v) != (o.corners == 4 ? 4u : 6u) ? 1 : 0;
-      ++checked;
-    }
-  }
-  EXPECT_GT(extraordinary, 0u);
-  EXPECT_GT(checked, refined.number_of_vertices()); // the vertices on base edges, from both faces
+  // (at a corner with one face the analysis finds no C1 tangent plane, and
+  // limit_normals averages the faces around, which depends on the level)
+  const std::vector<Exact_mesh::Vertex_index> checked = expect_limits_at_parameters<Mask>(
+    surface, base, refined, origin, limit, normal,
+    [&](Exact_mesh::Vertex_index v) { return !(refined.is_border(v) && refined.degree(v) == 2); });
+  const std::size_t regular_valence = std::is_same<Mask, S::Catmull_clark_mask<Exact_mesh>>::value ? 4 : 6;
+  const auto extraordinary = std::count_if(
+    checked.begin(), checked.end(), [&](Exact_mesh::Vertex_index v) { return refined.degree(v) != regular_valence; });
+  EXPECT_GT(extraordinary, 0);
+  EXPECT_GT(checked.size(), refined.number_of_vertices()); // the vertices on base edges, from both faces
 }
 
 template <class Mask = S::Catmull_clark_mask<Exact_mesh>>
@@ -287,32 +307,13 @@ void expect_tagged_limit_of_refined_vertices(const Exact_mesh& mesh, int levels,
   };
   for(const auto e : refined.edges()) // decayed to 0 or infinite
     ASSERT_TRUE(refined_edges[e] == Q(0) || refined_edges[e] >= Q(10));
-  std::vector<Exact_mesh::Face_index> base_faces(base.faces().begin(), base.faces().end());
-  std::map<std::pair<std::size_t, Exact_mesh::Vertex_index>, bool> done;
-  std::size_t checked = 0, sharp = 0;
-  for(const auto f : refined.faces()) {
-    const S::Face_origin& o = origin[f];
-    int i = 0;
-    for(const auto h : CGAL::halfedges_around_face(refined.halfedge(f), refined)) {
-      const auto v = refined.target(h);
-      const auto [u, w] = std::make_pair(o.uv[i][0], o.uv[i][1]);
-      ++i;
-      if(!done.emplace(std::make_pair(o.face, v), true).second)
-        continue;
-      SCOPED_TRACE("base face " + std::to_string(o.face) + " (u, v) = (" + std::to_string(u) + ", " +
-                   std::to_string(w) + ")");
-      const S::Limit_sample s = surface.evaluate(base_faces[o.face], u, w);
-      EXPECT_EQ(s.position, to_double(limit.point(v)));
-      if(infinitely_sharp(v)) {
-        ++sharp;
-      } else if(!(refined.is_border(v) && refined.degree(v) == 2)) {
-        EXPECT_NEAR((s.normal - unit(normal[v])).squared_length(), 0, 1e-24);
-      }
-      ++checked;
-    }
-  }
-  EXPECT_GT(sharp, 0u);
-  EXPECT_GT(checked, refined.number_of_vertices());
+  const std::vector<Exact_mesh::Vertex_index> checked =
+    expect_limits_at_parameters<Mask>(surface, base, refined, origin, limit, normal, [&](Exact_mesh::Vertex_index v) {
+      return !infinitely_sharp(v) && !(refined.is_border(v) && refined.degree(v) == 2);
+    });
+  const auto sharp = std::count_if(checked.begin(), checked.end(), infinitely_sharp);
+  EXPECT_GT(sharp, 0);
+  EXPECT_GT(checked.size(), refined.number_of_vertices());
 }
 
 // Catmull-Clark and Loop with tags: an infinitely sharp crease (three
