@@ -410,28 +410,48 @@ private:
         mesh.template add_property_map<typename Patch_mesh::Vertex_index, Sharpness>(vertex_name, Sharpness(0)).first};
     }
 
+    /*
+     * The sharpness of the edges and vertices of one mesh, its maps looked
+     * up once: the mesh's by ordinal, a local mesh's in its maps, 0 for a
+     * mesh without tags.
+     */
     template <class Source>
-    Sharpness of_edge(const Source& m, typename boost::graph_traits<Source>::edge_descriptor e) const
+    class Reader
     {
-      if constexpr(std::is_same<Source, PolygonMesh>::value)
-        if(&m == mesh)
-          return mesh_sharpness->edges[(*numbering)(e)];
-      if constexpr(std::is_same<Source, Patch_mesh>::value)
-        if(const auto found = maps(m))
-          return found->first[e];
-      return Sharpness(0);
-    }
-    template <class Source>
-    Sharpness of_vertex(const Source& m, typename boost::graph_traits<Source>::vertex_descriptor v) const
-    {
-      if constexpr(std::is_same<Source, PolygonMesh>::value)
-        if(&m == mesh)
-          return mesh_sharpness->vertices[(*numbering)(v)];
-      if constexpr(std::is_same<Source, Patch_mesh>::value)
-        if(const auto found = maps(m))
-          return found->second[v];
-      return Sharpness(0);
-    }
+    public:
+      Reader(const Tags& tags, const Source& m) : m_tags(&tags)
+      {
+        if constexpr(std::is_same<Source, PolygonMesh>::value)
+          m_of_mesh = &m == tags.mesh;
+        if constexpr(std::is_same<Source, Patch_mesh>::value)
+          if(!m_of_mesh)
+            m_maps = maps(m);
+      }
+      // of an edge or a vertex of the mesh
+      template <class Element>
+      Sharpness operator()(Element x) const
+      {
+        constexpr bool is_edge = std::is_same<Element, typename boost::graph_traits<Source>::edge_descriptor>::value;
+        if constexpr(std::is_same<Source, PolygonMesh>::value)
+          if(m_of_mesh)
+            return (is_edge ? m_tags->mesh_sharpness->edges
+                            : m_tags->mesh_sharpness->vertices)[(*m_tags->numbering)(x)];
+        if constexpr(std::is_same<Source, Patch_mesh>::value) {
+          if(m_maps) {
+            if constexpr(is_edge)
+              return m_maps->first[x];
+            else
+              return m_maps->second[x];
+          }
+        }
+        return Sharpness(0);
+      }
+
+    private:
+      const Tags* m_tags;
+      bool m_of_mesh = false;
+      std::optional<std::pair<Edge_sharpness_map, Vertex_sharpness_map>> m_maps;
+    };
 
     /*
      * What the tags make of the target of `h`: `smooth` (no tag at it nor on
@@ -447,7 +467,13 @@ private:
     template <class Source>
     Corner at_corner(const Source& m, typename boost::graph_traits<Source>::halfedge_descriptor h) const
     {
-      const Sharpness at = of_vertex(m, target(h, m));
+      return at_corner(Reader<Source>(*this, m), m, h);
+    }
+    template <class Source>
+    static Corner at_corner(const Reader<Source>& sharpness, const Source& m,
+                            typename boost::graph_traits<Source>::halfedge_descriptor h)
+    {
+      const Sharpness at = sharpness(target(h, m));
       if(Crease_rules::is_semi_sharp(at))
         return Corner::decaying;
       int sharp_edges = 0, tagged = 0;
@@ -456,7 +482,7 @@ private:
           ++sharp_edges;
           continue;
         }
-        const Sharpness s = of_edge(m, edge(g, m));
+        const Sharpness s = sharpness(edge(g, m));
         if(Crease_rules::is_semi_sharp(s))
           return Corner::decaying;
         if(Crease_rules::is_infinite(s)) {
@@ -475,8 +501,9 @@ private:
     template <class Source>
     bool at_corners(const Source& m, typename boost::graph_traits<Source>::halfedge_descriptor h0) const
     {
+      const Reader<Source> sharpness(*this, m);
       for(const auto h : CGAL::halfedges_around_face(h0, m))
-        if(at_corner(m, h) != Corner::smooth)
+        if(at_corner(sharpness, m, h) != Corner::smooth)
           return true;
       return false;
     }
@@ -488,12 +515,13 @@ private:
                    Patch_mesh& patch) const
     {
       const auto [edges, vertices] = add_maps(patch);
+      const Reader<Source> sharpness(*this, source);
       for(const auto v : patch.vertices())
-        vertices[v] = of_vertex(source, sources[v.idx()]);
+        vertices[v] = sharpness(sources[v.idx()]);
       for(const auto e : patch.edges()) {
         const auto h = patch.halfedge(e);
         const auto [g, found] = CGAL::halfedge(sources[patch.source(h).idx()], sources[patch.target(h).idx()], source);
-        edges[e] = found ? of_edge(source, edge(g, source)) : Sharpness(0);
+        edges[e] = found ? sharpness(edge(g, source)) : Sharpness(0);
       }
     }
   };
@@ -1156,10 +1184,11 @@ private:
                             .face_to_face_output_iterator(std::back_inserter(copy.faces)));
     if(m_tags) {
       const auto [edges, vertices] = Tags::add_maps(copy.mesh);
+      const typename Tags::template Reader<PolygonMesh> sharpness(*m_tags, *m_mesh);
       for(const auto& [v, w] : copy.vertices)
-        vertices[w] = m_tags->of_vertex(*m_mesh, v);
+        vertices[w] = sharpness(v);
       for(const auto& [h, g] : copy.halfedges)
-        edges[copy.mesh.edge(g)] = m_tags->of_edge(*m_mesh, edge(h, *m_mesh));
+        edges[copy.mesh.edge(g)] = sharpness(edge(h, *m_mesh));
     }
     return copy;
   }
