@@ -397,6 +397,24 @@ TEST(LimitSurface, bad_parameters_are_refused_naming_the_problem)
   expect_refusal([&] { surface.evaluate(quad, 0, 0.5, 0.5); }, "face 0 is a quad");
   expect_refusal([&] { surface.evaluate(triangle, 3, 0.5, 0.5); }, "face 1 has no corner 3");
   expect_refusal([&] { S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(box); }, "face 0 is not a triangle");
+  // tags: a negative sharpness, and the Chaikin crease method (not supported yet); the maps unchanged
+  Mesh tagged = testing_utils::cube<Mesh>();
+  const auto sharpness = tagged.add_property_map<Mesh::Edge_index, float>("e:sharpness", 0.f).first;
+  sharpness[Mesh::Edge_index(3)] = -1.f;
+  expect_refusal(
+    [&] {
+      S::Limit_surface<Mesh> s(tagged, S::Catmull_clark_mask<Mesh>(), S::parameters::edge_sharpness_map(sharpness));
+    },
+    "the sharpness of edge 3 is negative or NaN");
+  EXPECT_EQ(sharpness[Mesh::Edge_index(3)], -1.f);
+  sharpness[Mesh::Edge_index(3)] = 2.f;
+  expect_refusal(
+    [&] {
+      S::Limit_surface<Mesh> s(tagged, S::Catmull_clark_mask<Mesh>(),
+                               S::parameters::edge_sharpness_map(sharpness).crease_method(S::Crease_method::chaikin));
+    },
+    "Limit_surface: the Chaikin crease method is not supported yet");
+  EXPECT_EQ(sharpness[Mesh::Edge_index(3)], 2.f);
   const Mesh triangles = testing_utils::tetrahedron<Mesh>();
   const S::Limit_surface<Mesh, S::Loop_mask<Mesh>> loop(triangles);
   expect_refusal([&] { loop.evaluate(*triangles.faces().begin(), 0.5, 0.75); }, "not in the triangle's domain");
